@@ -1,0 +1,56 @@
+#include "primitives/Vector.h"
+
+#include <cmath>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+namespace rt {
+
+namespace {
+[[noreturn]] void throwZero(const std::string& what) {
+  throw std::invalid_argument(what + " is the zero vector, which cannot exist");
+}
+}  // namespace
+
+const Vector Vector::AXIS_X{1, 0, 0};
+const Vector Vector::AXIS_Y{0, 1, 0};
+const Vector Vector::AXIS_Z{0, 0, 1};
+
+Vector::Vector(double x, double y, double z) : Vector(Double3(x, y, z)) {}
+
+Vector::Vector(const Double3& xyz) : xyz_(xyz) {
+  if (xyz_.isZero()) throwZero("Vector constructor: " + xyz.str());
+}
+
+Vector Vector::operator+(const Vector& o) const {
+  const Double3 r = xyz_ + o.xyz_;
+  if (r.isZero()) throwZero("Vector addition: " + xyz_.str() + " + " + o.xyz_.str());
+  return Vector(r, Unchecked{});
+}
+
+Vector Vector::operator-(const Vector& o) const {
+  const Double3 r = xyz_ - o.xyz_;
+  if (r.isZero()) throwZero("Vector subtraction: " + xyz_.str() + " - " + o.xyz_.str());
+  return Vector(r, Unchecked{});
+}
+
+Vector Vector::operator*(double s) const {
+  const Double3 r = xyz_ * s;
+  if (r.isZero()) throwZero("Vector scaling: " + xyz_.str() + " * " + formatNumber(s));
+  return Vector(r, Unchecked{});
+}
+
+Vector Vector::cross(const Vector& o) const {
+  const Double3 r = xyz_.cross(o.xyz_);
+  if (r.isZero()) throwZero("Vector cross product: " + xyz_.str() + " x " + o.xyz_.str());
+  return Vector(r, Unchecked{});
+}
+
+double Vector::length() const { return std::sqrt(lengthSquared()); }
+
+Vector Vector::normalized() const { return Vector(xyz_ / length(), Unchecked{}); }
+
+std::ostream& operator<<(std::ostream& os, const Vector& v) { return os << v.xyz(); }
+
+}  // namespace rt

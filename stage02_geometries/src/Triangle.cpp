@@ -1,0 +1,8 @@
+#include "geometries/Triangle.h"
+
+namespace rt {
+
+Triangle::Triangle(const Point& p1, const Point& p2, const Point& p3)
+    : vertices_{p1, p2, p3}, plane_(p1, p2, p3) {}
+
+}  // namespace rt

@@ -1,0 +1,74 @@
+#pragma once
+/// @file Intersect.h
+/// Ray-shape intersection, one root solver per shape.
+///
+/// Each solver returns the ray parameters t of the ray's crossings with the shape, keeping only
+/// t > 0 after alignZero (a ray that starts on a surface does not hit it there), in ascending
+/// order. Both queries of this stage are built on these solvers, so the maths exists once:
+///  - findIntersections: every crossing as a Point, sorted by distance (the course's API);
+///  - closestHit: the smallest t within (0, tMax] (what the renderer uses; no allocation).
+/// The maximum distance is inclusive: a crossing exactly at tMax counts.
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "geometries/Geometry.h"
+#include "primitives/Ray.h"
+#include "primitives/Util.h"
+
+namespace rt {
+
+inline constexpr double INFINITE_DISTANCE = std::numeric_limits<double>::infinity();
+
+/// Up to four ray parameters, ascending, all > 0. Stack storage only.
+class Roots {
+ public:
+  static constexpr int CAPACITY = 4;
+  /// Keeps t when alignZero(t) > 0, inserting it in ascending order.
+  void add(double t) noexcept;
+  int size() const noexcept { return count_; }
+  bool empty() const noexcept { return count_ == 0; }
+  double operator[](int i) const noexcept { return t_[i]; }
+  const double* begin() const noexcept { return t_; }
+  const double* end() const noexcept { return t_ + count_; }
+
+ private:
+  double t_[CAPACITY] = {};
+  int count_ = 0;
+};
+
+/// True when t is within the inclusive maximum distance: alignZero(t - tMax) <= 0.
+inline bool withinDistance(double t, double tMax) noexcept {
+  return t <= tMax || alignZero(t - tMax) <= 0;
+}
+
+Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept;
+Roots intersectRoots(const Plane& p, const Ray& ray) noexcept;
+Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept;
+Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept;
+Roots intersectRoots(const Tube& t, const Ray& ray) noexcept;
+Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept;
+Roots intersectRoots(const Geometry& g, const Ray& ray) noexcept;
+
+/// The course's findIntersections: every crossing with t in (0, maxDistance], sorted by
+/// distance from the ray's head; empty when there is none (the course returns null).
+template <typename Shape>
+std::vector<Point> findIntersections(const Shape& shape, const Ray& ray,
+                                     double maxDistance = INFINITE_DISTANCE) {
+  std::vector<Point> points;
+  for (double t : intersectRoots(shape, ray))
+    if (withinDistance(t, maxDistance)) points.push_back(ray.point(t));
+  return points;
+}
+
+/// The nearest crossing's t within (0, tMax], if any.
+template <typename Shape>
+std::optional<double> closestHit(const Shape& shape, const Ray& ray,
+                                 double tMax = INFINITE_DISTANCE) noexcept {
+  const Roots roots = intersectRoots(shape, ray);
+  if (!roots.empty() && withinDistance(roots[0], tMax)) return roots[0];
+  return std::nullopt;
+}
+
+}  // namespace rt

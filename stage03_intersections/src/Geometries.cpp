@@ -1,0 +1,53 @@
+#include "intersections/Geometries.h"
+
+#include <algorithm>
+
+namespace rt {
+
+std::uint32_t Geometries::add(Geometry shape) {
+  shapes_.push_back(std::move(shape));
+  return static_cast<std::uint32_t>(shapes_.size() - 1);
+}
+
+std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax) const {
+  std::optional<Hit> best;
+  for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
+    const Roots roots = intersectRoots(shapes_[i], ray);
+    // Roots are ascending: the first is this shape's nearest. tMax shrinks with every hit.
+    if (!roots.empty() && withinDistance(roots[0], tMax)) {
+      best = Hit{roots[0], i};
+      tMax = roots[0];
+    }
+  }
+  return best;
+}
+
+bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit) const {
+  for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
+    for (double t : intersectRoots(shapes_[i], ray)) {
+      if (!withinDistance(t, tMax)) break;
+      if (!visit(Hit{t, i})) return false;
+    }
+  }
+  return true;
+}
+
+std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
+                                                          double maxDistance) const {
+  std::vector<GeoPoint> points;
+  forEachHit(ray, maxDistance, [&](const Hit& hit) {
+    points.push_back(GeoPoint{hit.geometry, ray.point(hit.t), hit.t});
+    return true;
+  });
+  std::sort(points.begin(), points.end(),
+            [](const GeoPoint& a, const GeoPoint& b) { return a.t < b.t; });
+  return points;
+}
+
+std::vector<Point> Intersectable::findIntersections(const Ray& ray, double maxDistance) const {
+  std::vector<Point> points;
+  for (const GeoPoint& gp : findGeoIntersections(ray, maxDistance)) points.push_back(gp.point);
+  return points;
+}
+
+}  // namespace rt

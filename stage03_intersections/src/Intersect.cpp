@@ -1,0 +1,151 @@
+#include "intersections/Intersect.h"
+
+#include <cmath>
+#include <span>
+
+#include "primitives/Util.h"
+
+namespace rt {
+
+void Roots::add(double t) noexcept {
+  if (!(alignZero(t) > 0) || count_ == CAPACITY) return;
+  int i = count_++;
+  for (; i > 0 && t_[i - 1] > t; --i) t_[i] = t_[i - 1];
+  t_[i] = t;
+}
+
+namespace {
+
+/// The parameter where the ray meets the plane through q with normal n, or NaN when the ray is
+/// parallel to the plane (alignZero(n·dir) == 0). Roots::add drops NaN and t <= 0, so a ray
+/// starting on the plane does not hit it.
+double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
+  const double nd = alignZero(n.dot(ray.direction().xyz()));
+  if (nd == 0) return NAN;
+  return n.dot(q - ray.head().xyz()) / nd;
+}
+
+/// The course's inside test for a convex polygon hit by the ray: with vi = Pi - P0 and
+/// ni = vi x v(i+1), the ray passes inside iff dir·ni has the same sign for every edge. A zero
+/// (the course's alignZero of dir·normalize(ni)) means the ray meets an edge or a vertex: a miss.
+bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
+  const Double3& p0 = ray.head().xyz();
+  const Double3& dir = ray.direction().xyz();
+  const std::size_t n = vertices.size();
+  int sign = 0;
+  Double3 vi = vertices[0].xyz() - p0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Double3 vNext = vertices[(i + 1) % n].xyz() - p0;
+    const Double3 ni = vi.cross(vNext);
+    const double s = dir.dot(ni);
+    // isZero(dir·normalize(ni)) without the square root: s² < threshold²·|ni|².
+    if (s * s <= ZERO_THRESHOLD * ZERO_THRESHOLD * ni.lengthSquared()) return false;
+    const int si = s > 0 ? 1 : -1;
+    if (sign != 0 && si != sign) return false;
+    sign = si;
+    vi = vNext;
+  }
+  return true;
+}
+
+/// The two roots of a·t² + b·t + c = 0 in the cancellation-free form, or none when the
+/// discriminant is not positive (a tangent ray does not intersect, as for the course's sphere).
+void addQuadraticRoots(double a, double b, double c, Roots& roots) noexcept {
+  const double disc = b * b - 4 * a * c;
+  if (alignZero(disc) <= 0) return;
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  roots.add(q / a);
+  if (q != 0) roots.add(c / q);
+}
+
+}  // namespace
+
+Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
+  // u = O - P0, tm = dir·u, d² = |u|² - tm²; th = √(r² - d²); t = tm ∓ th.
+  Roots roots;
+  const Double3 u = s.center().xyz() - ray.head().xyz();
+  const double r = s.radius();
+  if (u.isZero()) {  // the head is the centre: one hit at distance r
+    roots.add(r);
+    return roots;
+  }
+  const double tm = ray.direction().xyz().dot(u);
+  const double thSquared = alignZero(r * r - (u.lengthSquared() - tm * tm));
+  if (thSquared <= 0) return roots;  // the line misses or is tangent
+  const double th = std::sqrt(thSquared);
+  roots.add(tm - th);
+  roots.add(tm + th);
+  return roots;
+}
+
+Roots intersectRoots(const Plane& p, const Ray& ray) noexcept {
+  Roots roots;
+  roots.add(planeT(p.point().xyz(), p.normal().xyz(), ray));
+  return roots;
+}
+
+Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept {
+  Roots roots;
+  const double tHit = planeT(t.plane().point().xyz(), t.plane().normal().xyz(), ray);
+  if (alignZero(tHit) > 0 && passesInside(t.vertices(), ray)) roots.add(tHit);
+  return roots;
+}
+
+Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept {
+  Roots roots;
+  const double tHit = planeT(p.plane().point().xyz(), p.plane().normal().xyz(), ray);
+  if (alignZero(tHit) > 0 && passesInside(p.vertices(), ray)) roots.add(tHit);
+  return roots;
+}
+
+namespace {
+/// Roots of the infinite tube: |(P(t) - Pa)⊥|² = r², where ⊥ removes the axis component.
+/// Parallel rays (no component across the axis) have none.
+void addTubeRoots(const Tube& tube, const Ray& ray, Roots& roots) noexcept {
+  const Double3& va = tube.axis().direction().xyz();
+  const Double3& v = ray.direction().xyz();
+  const Double3 dp = ray.head().xyz() - tube.axis().head().xyz();
+  const Double3 vPerp = v - va * va.dot(v);
+  const Double3 dpPerp = dp - va * va.dot(dp);
+  const double a = vPerp.lengthSquared();
+  if (isZero(a)) return;
+  const double r = tube.radius();
+  addQuadraticRoots(a, 2 * vPerp.dot(dpPerp), dpPerp.lengthSquared() - r * r, roots);
+}
+}  // namespace
+
+Roots intersectRoots(const Tube& t, const Ray& ray) noexcept {
+  Roots roots;
+  addTubeRoots(t, ray, roots);
+  return roots;
+}
+
+Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept {
+  // The side: tube roots whose axial coordinate lies strictly between the bases. The caps: the
+  // base planes' roots inside the base disc, the rim included (so a rim point is found once,
+  // and its normal is the base's, as Cylinder::normal says).
+  Roots roots;
+  const Double3& va = c.axis().direction().xyz();
+  const Double3& pa = c.axis().head().xyz();
+  const double h = c.height();
+  const double r2 = c.radius() * c.radius();
+
+  Roots side;
+  addTubeRoots(c.tube(), ray, side);
+  for (double t : side) {
+    const double s = va.dot(ray.point(t).xyz() - pa);
+    if (alignZero(s) > 0 && alignZero(s - h) < 0) roots.add(t);
+  }
+  for (const Double3& centre : {pa, pa + va * h}) {
+    const double t = planeT(centre, va, ray);
+    if (alignZero(t) > 0 && alignZero((ray.point(t).xyz() - centre).lengthSquared() - r2) <= 0)
+      roots.add(t);
+  }
+  return roots;
+}
+
+Roots intersectRoots(const Geometry& g, const Ray& ray) noexcept {
+  return std::visit([&ray](const auto& shape) { return intersectRoots(shape, ray); }, g);
+}
+
+}  // namespace rt
