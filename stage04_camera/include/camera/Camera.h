@@ -3,8 +3,8 @@
 
 #include <atomic>
 #include <memory>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "camera/Image.h"
