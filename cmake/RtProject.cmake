@@ -48,7 +48,8 @@ function(rt_add_stage_tests label)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   set(exe ${label}_tests)
   add_executable(${exe} ${ARG_SOURCES})
-  target_link_libraries(${exe} PRIVATE rt_options ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
+  target_link_libraries(${exe} PRIVATE rt_options ${ARG_DEPENDS} GTest::gmock GTest::gtest
+                                       GTest::gtest_main)
   # Tests that render write their images under the build tree, never into the sources.
   gtest_discover_tests(${exe}
     WORKING_DIRECTORY "${CMAKE_BINARY_DIR}"
@@ -58,9 +59,9 @@ endfunction()
 
 macro(rt_require_gtest)
   find_package(GTest QUIET)
-  if(NOT GTest_FOUND)
-    message(FATAL_ERROR "GoogleTest not found: install the Debian package libgtest-dev "
-                        "(apt-get install libgtest-dev)")
+  if(NOT GTest_FOUND OR NOT TARGET GTest::gmock)
+    message(FATAL_ERROR "GoogleTest/GoogleMock not found: install the Debian packages "
+                        "libgtest-dev and libgmock-dev (apt-get install libgtest-dev libgmock-dev)")
   endif()
   include(GoogleTest)
 endmacro()

@@ -1,6 +1,9 @@
 #include "intersections/Intersect.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <span>
 
 #include "primitives/Util.h"
@@ -16,13 +19,28 @@ void Roots::add(double t) noexcept {
 
 namespace {
 
+/// The largest absolute coordinate of a point: the scale of its rounding error.
+double magnitude(const Double3& p) noexcept {
+  return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+}
+
 /// The parameter where the ray meets the plane through q with normal n, or NaN when the ray is
-/// parallel to the plane (alignZero(n·dir) == 0). Roots::add drops NaN and t <= 0, so a ray
-/// starting on the plane does not hit it.
+/// parallel to the plane (alignZero(n·dir) == 0) or starts on it. Roots::add drops NaN and
+/// t <= 0.
+///
+/// "Starts on it" is decided relative to the coordinates' size: a head computed as a hit point
+/// far from the origin lies off the plane by rounding error of about ε·|coordinates|, and a
+/// glancing ray relaunched from it would otherwise find the plane again at a tiny t that the
+/// course's fixed 2^-40 threshold does not catch.
 double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
   const double nd = alignZero(n.dot(ray.direction().xyz()));
   if (nd == 0) return NAN;
-  return n.dot(q - ray.head().xyz()) / nd;
+  const Double3& p0 = ray.head().xyz();
+  const double numerator = n.dot(q - p0);
+  const double roundoff = 8 * std::numeric_limits<double>::epsilon() *
+                          std::max(magnitude(q), magnitude(p0));
+  if (std::abs(numerator) <= roundoff) return NAN;
+  return numerator / nd;
 }
 
 /// The course's inside test for a convex polygon hit by the ray: with vi = Pi - P0 and
@@ -122,8 +140,9 @@ Roots intersectRoots(const Tube& t, const Ray& ray) noexcept {
 
 Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept {
   // The side: tube roots whose axial coordinate lies strictly between the bases. The caps: the
-  // base planes' roots inside the base disc, the rim included (so a rim point is found once,
-  // and its normal is the base's, as Cylinder::normal says).
+  // base planes' roots inside the base disc, the rim included when the ray crosses the solid
+  // there (so a rim point is found once, and its normal is the base's, as Cylinder::normal
+  // says).
   Roots roots;
   const Double3& va = c.axis().direction().xyz();
   const Double3& pa = c.axis().head().xyz();
@@ -136,10 +155,18 @@ Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept {
     const double s = va.dot(ray.point(t).xyz() - pa);
     if (alignZero(s) > 0 && alignZero(s - h) < 0) roots.add(t);
   }
-  for (const Double3& centre : {pa, pa + va * h}) {
+  const Double3& dir = ray.direction().xyz();
+  for (const auto& [centre, outward] : {std::pair{pa, -va}, std::pair{pa + va * h, va}}) {
     const double t = planeT(centre, va, ray);
-    if (alignZero(t) > 0 && alignZero((ray.point(t).xyz() - centre).lengthSquared() - r2) <= 0)
-      roots.add(t);
+    if (!(alignZero(t) > 0)) continue;
+    const Double3 radial = ray.point(t).xyz() - centre;
+    const double rim = alignZero(radial.lengthSquared() - r2);
+    if (rim > 0) continue;  // outside the disc
+    // On the rim itself the ray counts only when it crosses into or out of the solid there:
+    // inwards both across the cap and radially, or outwards both ways. A ray that grazes the
+    // rim, or runs along the side parallel to the axis, only touches the edge.
+    if (rim == 0 && !(alignZero(dir.dot(outward)) * alignZero(dir.dot(radial)) > 0)) continue;
+    roots.add(t);
   }
   return roots;
 }

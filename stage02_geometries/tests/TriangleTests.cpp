@@ -1,0 +1,49 @@
+// Stage 2: Triangle constructor and normal (catalogue TriangleTests).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "geometries/Triangle.h"
+
+#include "ExpectVector.h"
+
+namespace rt {
+namespace {
+
+using test::expectVector;
+
+TEST(TriangleTests, constructor) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: three points in general position, kept in order
+  const Triangle t(Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0));
+  EXPECT_EQ(t.vertices()[0], Point(0, 0, 1));
+  EXPECT_EQ(t.vertices()[1], Point(1, 0, 0));
+  EXPECT_EQ(t.vertices()[2], Point(0, 1, 0));
+  // =============== Boundary Values Tests ==================
+  // TC11: collinear vertices throw
+  EXPECT_THROW(Triangle(Point(0, 0, 0), Point(1, 1, 1), Point(2, 2, 2)), std::invalid_argument);
+  // TC12: two coincident vertices throw
+  EXPECT_THROW(Triangle(Point(0, 0, 0), Point(0, 0, 0), Point(2, 2, 2)), std::invalid_argument);
+  EXPECT_THROW(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(1, 0, 0)), std::invalid_argument);
+}
+
+TEST(TriangleTests, normal) {
+  // TC01: (1,0,0),(1,1,0),(0,0,0): normalize((0,1,0) x (-1,0,0)) = (0,0,1)
+  const Triangle t(Point(1, 0, 0), Point(1, 1, 0), Point(0, 0, 0));
+  expectVector(t.normal(Point(0.5, 0.25, 0)), 0, 0, 1);
+  // TC02: (0,0,1),(1,0,0),(0,1,0): (1,0,-1) x (0,1,-1) = (1,1,1) -> (1,1,1)/sqrt(3)
+  const Triangle t2(Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0));
+  const Vector n = t2.normal(Point(1.0 / 3, 1.0 / 3, 1.0 / 3));
+  const double k = 1 / std::sqrt(3.0);
+  expectVector(n, k, k, k);
+  // TC03: unit length, orthogonal to every edge, equal to the plane's normal
+  EXPECT_NEAR(n.length(), 1.0, 1e-12);
+  EXPECT_NEAR(n.dot(Point(1, 0, 0) - Point(0, 0, 1)), 0.0, 1e-12);
+  EXPECT_NEAR(n.dot(Point(0, 1, 0) - Point(1, 0, 0)), 0.0, 1e-12);
+  EXPECT_NEAR(n.dot(Point(0, 0, 1) - Point(0, 1, 0)), 0.0, 1e-12);
+  EXPECT_EQ(n, t2.plane().normal());
+}
+
+}  // namespace
+}  // namespace rt
