@@ -1,0 +1,116 @@
+#include "lighting/PhongTracer.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "primitives/Util.h"
+
+namespace rt {
+
+namespace {
+bool isExactlyZero(const Double3& k) { return k.x == 0 && k.y == 0 && k.z == 0; }
+}  // namespace
+
+PhongTracer::PhongTracer(const LitScene& scene, const Intersectable* accelerator)
+    : RayTracer(scene, accelerator), litScene_(scene) {
+  if (scene.appearances.size() != scene.geometries.size()) {
+    throw std::logic_error(
+        "PhongTracer: scene.appearances has " + std::to_string(scene.appearances.size()) +
+        " entries but scene.geometries has " + std::to_string(scene.geometries.size()) +
+        " shapes; every shape needs one Appearance (use LitScene::add)");
+  }
+  // Everything the per-ray code relies on is checked here, once, so that shading never throws:
+  // the lists are public and may have been filled without LitScene::add / addLight.
+  for (std::size_t i = 0; i < scene.appearances.size(); ++i) {
+    try {
+      scene.appearances[i].material.validate();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("PhongTracer: scene.appearances[" + std::to_string(i) +
+                                  "]: " + e.what());
+    }
+  }
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    try {
+      validate(scene.lights[i]);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("PhongTracer: scene.lights[" + std::to_string(i) +
+                                  "]: " + e.what());
+    }
+  }
+
+  terms_.reserve(scene.appearances.size());
+  for (const Appearance& a : scene.appearances) {
+    std::uint8_t t = NONE;
+    if (!isExactlyZero(a.material.kD)) t |= DIFFUSE;
+    if (!isExactlyZero(a.material.kS)) t |= SPECULAR;
+    terms_.push_back(t);
+  }
+}
+
+Color PhongTracer::traceRay(const Ray& ray) const {
+  const std::optional<Hit> hit = intersector_.closestHit(ray);
+  if (!hit) return litScene_.background;
+  // Course year 5784: the ambient light's Ia·kA, once per primary hit (not per light, not per
+  // recursion level).
+  return litScene_.ambientLight.intensity() + localEffects(makeContext(*hit, ray), Double3::ONE);
+}
+
+PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray) const {
+  const Point p = ray.point(hit.t);
+  const Vector n = normalAt(litScene_.geometries[hit.geometry], p);
+  const Vector& v = ray.direction();
+  return HitContext{
+      hit.geometry, p, n, v, alignZero(n.dot(v)), &litScene_.appearances[hit.geometry]};
+}
+
+/*
+ * Phong at the hit point P, for every light L (unit vectors, l from the light to P, v from the
+ * eye to P, n the outward normal):
+ *
+ *   colour = emission + Σ_L  I_L(P) · ktr_L · ( kD·|n·l|  +  kS·max(0, −v·r)^nSh ),
+ *   r = l − 2(l·n)n   (l mirrored about the surface).
+ *
+ * A light counts only when it is on the viewer's side of the surface: (n·l)(n·v) > 0, both dot
+ * products passed through alignZero so rounding noise never decides a side. A grazing view
+ * (n·v == 0) sees the emission only.
+ */
+Color PhongTracer::localEffects(const HitContext& h, const Double3& k) const {
+  Color color = h.appearance->emission;
+  const double nv = h.nv;
+  if (nv == 0) return color;
+  const std::uint8_t terms = terms_[h.geometry];
+  if (terms == NONE) return color;
+
+  const Material& m = h.appearance->material;
+  const Double3& n = h.normal.xyz();
+  const Double3& v = h.v.xyz();
+  for (const LightSource& light : litScene_.lights) {
+    const std::optional<LightSample> sample = illuminate(light, h.point);
+    if (!sample) continue;  // P is the light's own position: no direction to shade with
+    const double ln = sample->l.xyz().dot(n);
+    const double nl = alignZero(ln);
+    if (nl * nv <= 0) continue;  // the light is on the other side of the surface
+
+    const Double3 ktr = transparency(h, *sample, k);
+    if ((ktr * k).lowerThan(MIN_CALC_COLOR_K)) continue;
+
+    Double3 factor;  // kD·|n·l| + kS·max(0, −v·r)^nSh
+    if (terms & DIFFUSE) factor = m.kD * std::abs(nl);
+    if (terms & SPECULAR) {
+      const Double3 r = sample->l.xyz() - n * (2 * ln);
+      const double minusVR = alignZero(-v.dot(r));
+      // As the course: no highlight unless −v·r > 0 (also when nSh = 0, where pow would give 1).
+      if (minusVR > 0) factor = factor + m.kS * std::pow(minusVR, m.shininess);
+    }
+    color += sample->intensity * ktr * factor;
+  }
+  return color;
+}
+
+Double3 PhongTracer::transparency(const HitContext&, const LightSample&, const Double3&) const {
+  return Double3::ONE;
+}
+
+}  // namespace rt

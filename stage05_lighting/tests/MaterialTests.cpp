@@ -1,0 +1,138 @@
+// Stage 5: Material's validation and LitScene's bookkeeping of appearances.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "geometries/Sphere.h"
+#include "lighting/LitScene.h"
+#include "lighting/Material.h"
+
+namespace rt {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+
+/// The message of the std::invalid_argument that f throws ("" when it throws nothing).
+template <typename F>
+std::string invalidArgumentMessage(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MaterialTests, defaults) {
+  // TC01: a default material is all zero, shininess 0 and ior 1 (the course's defaults)
+  const Material m;
+  EXPECT_EQ(m.kD, Double3::ZERO);
+  EXPECT_EQ(m.kS, Double3::ZERO);
+  EXPECT_EQ(m.kT, Double3::ZERO);
+  EXPECT_EQ(m.kR, Double3::ZERO);
+  EXPECT_EQ(m.shininess, 0);
+  EXPECT_EQ(m.ior, 1.0);
+  EXPECT_NO_THROW(m.validate());
+}
+
+TEST(MaterialTests, validate) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: ordinary coefficients (the LightsTests triangle material) are accepted
+  Material ok;
+  ok.kD = Double3(0.2, 0.6, 0.4);
+  ok.kS = Double3(0.2, 0.4, 0.3);
+  ok.kT = Double3(0.3);
+  ok.kR = Double3(0.5, 0, 0.4);
+  ok.shininess = 301;
+  ok.ior = 1.5;
+  EXPECT_NO_THROW(ok.validate());
+
+  // TC02: a negative kD component is rejected, naming the field and its value
+  Material m;
+  m.kD = Double3(-0.5, 0, 0);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("kD"), HasSubstr("(-0.5,0,0)")));
+  // TC03: a negative kS, kT or kR component is rejected, each naming its own field
+  m = Material{};
+  m.kS = Double3(0, -1, 0);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("kS"), HasSubstr("(0,-1,0)")));
+  m = Material{};
+  m.kT = Double3(0, 0, -0.25);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("kT"), HasSubstr("-0.25")));
+  m = Material{};
+  m.kR = Double3(-2);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }), HasSubstr("kR"));
+  // TC04: a negative shininess is rejected with its value
+  m = Material{};
+  m.shininess = -3;
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("shininess"), HasSubstr("-3")));
+  // TC05: a negative ior is rejected with its value
+  m = Material{};
+  m.ior = -1.5;
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("ior"), HasSubstr("-1.5")));
+
+  // =============== Boundary Values Tests ==================
+  // TC11: zero coefficients and shininess 0 are accepted (they are the defaults)
+  EXPECT_NO_THROW(Material{}.validate());
+  // TC12: ior exactly 0 is rejected
+  m = Material{};
+  m.ior = 0;
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }), HasSubstr("ior"));
+  // TC13: a non-finite coefficient (infinity, NaN) is rejected
+  m = Material{};
+  m.kT = Double3(std::numeric_limits<double>::infinity(), 0, 0);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }),
+              AllOf(HasSubstr("kT"), HasSubstr("inf")));
+  m = Material{};
+  m.kD = Double3(0, std::nan(""), 0);
+  EXPECT_THAT(invalidArgumentMessage([&] { m.validate(); }), HasSubstr("kD"));
+  // TC14: coefficients above 1 are accepted (the course does not bound them; energy is the
+  // scene author's business)
+  m = Material{};
+  m.kS = Double3(2);
+  EXPECT_NO_THROW(m.validate());
+}
+
+TEST(LitSceneTests, addKeepsAppearancesAligned) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: add() appends the shape and its appearance at the same index
+  LitScene scene;
+  Material m;
+  m.kD = Double3(0.5);
+  EXPECT_EQ(scene.add(Sphere(Point(0, 0, -5), 1)), 0u);
+  EXPECT_EQ(scene.add(Sphere(Point(0, 0, -9), 1), Color(1, 2, 3), m), 1u);
+  ASSERT_EQ(scene.appearances.size(), 2u);
+  ASSERT_EQ(scene.geometries.size(), 2u);
+  EXPECT_EQ(scene.appearances[0].emission, Color::BLACK);
+  EXPECT_EQ(scene.appearances[0].material.kD, Double3::ZERO);
+  EXPECT_EQ(scene.appearances[1].emission, Color(1, 2, 3));
+  EXPECT_EQ(scene.appearances[1].material.kD, Double3(0.5));
+  // TC02: an invalid material is rejected before anything is added
+  Material bad;
+  bad.kS = Double3(-1);
+  EXPECT_THROW(scene.add(Sphere(Point(0, 0, -5), 1), Color::BLACK, bad), std::invalid_argument);
+  EXPECT_EQ(scene.appearances.size(), 2u);
+  EXPECT_EQ(scene.geometries.size(), 2u);
+
+  // =============== Boundary Values Tests ==================
+  // TC11: a stage-4 scene becomes a lit one with one default appearance per shape
+  Scene plain;
+  plain.geometries.add(Sphere(Point(0, 0, -5), 1));
+  plain.geometries.add(Sphere(Point(0, 0, -9), 2));
+  const LitScene lit(plain);
+  EXPECT_EQ(lit.appearances.size(), 2u);
+  EXPECT_EQ(lit.geometries.size(), 2u);
+  EXPECT_TRUE(lit.lights.empty());
+}
+
+}  // namespace
+}  // namespace rt
