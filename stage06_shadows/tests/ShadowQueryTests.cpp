@@ -1,0 +1,182 @@
+// Tests of the shadow query: the product of the blockers' kT along a shadow ray, its range and
+// its early stop.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+
+#include "geometries/Plane.h"
+#include "geometries/Sphere.h"
+#include "geometries/Triangle.h"
+#include "intersections/Geometries.h"
+#include "lighting/LitScene.h"
+#include "lighting/Material.h"
+#include "primitives/Double3.h"
+#include "primitives/Ray.h"
+#include "shadows/ShadowQuery.h"
+
+namespace rt {
+namespace {
+
+constexpr double CUT_OFF = 0.001;
+
+Material transparent(const Double3& kT) {
+  Material m;
+  m.kT = kT;
+  return m;
+}
+
+/// A horizontal triangle at height z, around the z axis, with the given kT.
+Triangle sheet(double z) { return Triangle(Point(-5, -5, z), Point(5, -5, z), Point(0, 5, z)); }
+
+/// The shadow ray of every test: from the origin straight up (+z), the light at z = 100.
+const Ray up(Point::ZERO, Vector(0, 0, 1));
+
+Transmittance query(const LitScene& s, double tMin = 0, double tMax = 100,
+                    const Double3& weight = Double3::ONE) {
+  return transmittance(s.geometries, s.appearances, up, tMin, tMax, weight, CUT_OFF);
+}
+
+TEST(ShadowQueryTests, blockers) {
+  // ============ Equivalence Partitions Tests ==============
+  {
+    // TC01: nothing between the point and the light: fully lit
+    LitScene s;
+    s.add(sheet(-10), Color::BLACK, transparent(Double3(0)));  // below the point
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3::ONE, t.factor);
+    EXPECT_EQ(0, t.crossings);
+    EXPECT_FALSE(t.stoppedEarly);
+  }
+  {
+    // TC02: an opaque blocker (kT = 0): fully shadowed, the walk stops at it
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(0)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3::ZERO, t.factor);
+    EXPECT_EQ(1, t.crossings);
+    EXPECT_TRUE(t.stoppedEarly);
+  }
+  {
+    // TC03: a triangle of kT 0.5 is crossed once: 0.5
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(0.5)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(0.5, t.factor.x);
+    EXPECT_EQ(0.5, t.factor.y);
+    EXPECT_EQ(0.5, t.factor.z);
+    EXPECT_EQ(1, t.crossings);
+  }
+  {
+    // TC04: a sphere of kT 0.5 is crossed twice (in and out), as in the course: 0.5² = 0.25
+    LitScene s;
+    s.add(Sphere(Point(0, 0, 50), 10), Color::BLACK, transparent(Double3(0.5)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3(0.25, 0.25, 0.25), t.factor);
+    EXPECT_EQ(2, t.crossings);
+  }
+  {
+    // TC05: per-channel kT, two blockers: (0.5,0.4,0.2)·(0.5,0.5,0.5) = (0.25,0.2,0.1)
+    LitScene s;
+    s.add(sheet(30), Color::BLACK, transparent(Double3(0.5, 0.4, 0.2)));
+    s.add(sheet(60), Color::BLACK, transparent(Double3(0.5)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3(0.25, 0.2, 0.1), t.factor);
+    EXPECT_EQ(2, t.crossings);
+  }
+  {
+    // TC06: an opaque blocker beyond the light (z = 150 > 100) does not shadow
+    LitScene s;
+    s.add(sheet(150), Color::BLACK, transparent(Double3(0)));
+    EXPECT_EQ(Double3::ONE, query(s).factor);
+  }
+
+  // =============== Boundary Values Tests ==================
+  {
+    // TC11: a blocker exactly at tMax counts (the range is inclusive, as the course's maxDistance)
+    LitScene s;
+    s.add(sheet(100), Color::BLACK, transparent(Double3(0)));
+    EXPECT_EQ(Double3::ZERO, query(s).factor);
+  }
+  {
+    // TC12: a blocker before tMin (within ε of the origin) is the surface itself: ignored
+    LitScene s;
+    s.add(sheet(1e-7), Color::BLACK, transparent(Double3(0)));
+    EXPECT_EQ(Double3::ONE, query(s, 1e-6).factor);
+  }
+  {
+    // TC13: an empty range (tMax < tMin, a light closer than 2ε): nothing in between
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(0)));
+    const Transmittance t = query(s, 1e-6, 1e-7);
+    EXPECT_EQ(Double3::ONE, t.factor);
+    EXPECT_EQ(0, t.crossings);
+  }
+  {
+    // TC14: a directional light: the range has no end, a blocker far away shadows
+    LitScene s;
+    s.add(sheet(1e9), Color::BLACK, transparent(Double3(0)));
+    EXPECT_EQ(Double3::ZERO, query(s, 0, INFINITE_DISTANCE).factor);
+  }
+}
+
+TEST(ShadowQueryTests, earlyStop) {
+  // ============ Equivalence Partitions Tests ==============
+  {
+    // TC01: a chain of 8 sheets of kT 0.2: 0.2^4 = 0.0016 goes on, 0.2^5 = 0.00032 < 0.001
+    // stops: exactly 5 crossings are multiplied, the result is ZERO
+    LitScene s;
+    for (int i = 1; i <= 8; ++i) s.add(sheet(10.0 * i), Color::BLACK, transparent(Double3(0.2)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(5, t.crossings);
+    EXPECT_TRUE(t.stoppedEarly);
+    EXPECT_EQ(Double3::ZERO, t.factor);
+  }
+  {
+    // TC02: a chain of 9 opaque sheets: the first one found ends the walk
+    LitScene s;
+    for (int i = 1; i <= 9; ++i) s.add(sheet(10.0 * i), Color::BLACK, transparent(Double3(0)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(1, t.crossings);
+    EXPECT_TRUE(t.stoppedEarly);
+  }
+  {
+    // TC03: the course's lowerThan needs all three channels below the cut-off: a red-only kT
+    // of 0.9 keeps the walk going through all 9 sheets (0.9^9 = 0.387... in red)
+    LitScene s;
+    for (int i = 1; i <= 9; ++i) {
+      s.add(sheet(10.0 * i), Color::BLACK, transparent(Double3(0.9, 0, 0)));
+    }
+    const Transmittance t = query(s);
+    EXPECT_EQ(9, t.crossings);
+    EXPECT_FALSE(t.stoppedEarly);
+    EXPECT_NEAR(std::pow(0.9, 9), t.factor.x, 1e-15);
+    EXPECT_EQ(0, t.factor.y);
+    EXPECT_EQ(0, t.factor.z);
+  }
+  {
+    // TC04: the path weight counts: kT 0.05 with weight 0.01 gives 5e-4 < 0.001: ZERO
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(0.05)));
+    s.add(sheet(70), Color::BLACK, transparent(Double3(0.5)));
+    const Transmittance t = query(s, 0, 100, Double3(0.01));
+    EXPECT_EQ(Double3::ZERO, t.factor);
+    EXPECT_TRUE(t.stoppedEarly);
+    EXPECT_EQ(Double3(0.05), query(s, 0, 60).factor);  // with weight 1 the same sheet: 0.05
+  }
+
+  // =============== Boundary Values Tests ==================
+  {
+    // TC11: kT 0.1 three times: 0.1·0.1·0.1 is 0.0010000000000000002 in doubles, not below
+    // 0.001, so the walk goes on to the fourth sheet
+    LitScene s;
+    for (int i = 1; i <= 4; ++i) s.add(sheet(10.0 * i), Color::BLACK, transparent(Double3(0.1)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(4, t.crossings);
+    EXPECT_TRUE(t.stoppedEarly);
+  }
+}
+
+}  // namespace
+}  // namespace rt

@@ -1,0 +1,87 @@
+#pragma once
+/// @file WhittedTracer.h
+
+#include "intersections/Intersectable.h"
+#include "lighting/LitScene.h"
+#include "primitives/Color.h"
+#include "primitives/Double3.h"
+#include "primitives/Ray.h"
+#include "reflections/TraceStats.h"
+#include "shadows/RayOffset.h"
+#include "shadows/ShadowTracer.h"
+
+namespace rt {
+
+/// The recursion limits of the Whitted tracer (the course's constants by default).
+struct WhittedSettings {
+  /// The largest accepted maxLevel: the recursion uses one stack frame per level.
+  static constexpr int MAX_LEVEL_LIMIT = 1000;
+
+  /// MAX_CALC_COLOR_LEVEL: the primary hit is at this level; a hit at level 1 casts no
+  /// secondary ray. So at most maxLevel − 1 bounces.
+  int maxLevel = 10;
+  /// MIN_CALC_COLOR_K: a secondary ray whose path weight is lowerThan minK (all three channels)
+  /// is not cast. 0 turns the cut-off off (a ray of weight exactly zero is still not cast).
+  double minK = 0.001;
+
+  /// @throws std::invalid_argument for maxLevel outside [1, MAX_LEVEL_LIMIT] or a negative or
+  ///         non-finite minK.
+  void validate() const;
+};
+
+/// The course's stage-7 tracer (Whitted): shadows, plus recursive reflection and refraction.
+///
+///   traceRay(ray)    = background on a miss, else ambient + calcColor(hit, maxLevel, (1,1,1))
+///   calcColor(h,l,k) = localEffects(h, k) + (l == 1 ? 0 : globalEffects(h, l, k))
+///   globalEffects    = effect(refracted, kT') + effect(reflected, kR')
+///   effect(ray, kx)  = 0 if (k·kx).lowerThan(minK), else kx · secondaryColor(ray, l, k·kx)
+///   secondaryColor   = calcColor(hit, l − 1, k·kx), or the background on a miss
+///
+/// With ior == 1 (the default): reflected r = v − 2(v·n)n, refracted = v (straight through),
+/// kT' = kT, kR' = kR, exactly as the course. With ior != 1: Snell's direction and Fresnel by
+/// Schlick: kT' = (1 − R)·kT, kR' = kR + R·kT (all of kT to the reflection on total internal
+/// reflection). A missed secondary ray gives background · kx (the course's 5785 fix).
+class WhittedTracer : public ShadowTracer {
+ public:
+  /// @param scene must outlive the tracer.
+  /// @throws std::logic_error when scene.appearances and scene.geometries differ in size;
+  ///         std::invalid_argument for invalid settings.
+  explicit WhittedTracer(const LitScene& scene, const Intersectable* accelerator = nullptr,
+                         const WhittedSettings& settings = {},
+                         const RayOffset& offset = RayOffset{});
+
+  Color traceRay(const Ray& ray) const override;
+
+  const WhittedSettings& settings() const { return settings_; }
+
+  /// Counts rays into stats from now on (nullptr: stop counting). stats must outlive the
+  /// renders; set it before rendering, not during.
+  void setStats(TraceStats* stats) { stats_ = stats; }
+
+ protected:
+  /// The colour of a hit at recursion level `level` reached with path weight k (no ambient).
+  Color calcColor(const HitContext& h, int level, const Double3& k) const;
+
+  /// The reflected and refracted contributions of a hit at level > 1.
+  Color globalEffects(const HitContext& h, int level, const Double3& k) const;
+
+  /// One secondary ray of weight kx leaving h along the unit direction dir: nothing when
+  /// (k·kx).lowerThan(minK); else kx · secondaryColor(h, ray, level, k·kx), the ray starting at
+  /// h.point shifted by the RayOffset to dir's side.
+  Color secondaryEffect(const HitContext& h, const Vector& dir, int level, const Double3& k,
+                        const Double3& kx) const;
+
+  /// The colour seen along one secondary ray cast from the hit `from` at recursion level `level`
+  /// with path weight kkx (= k·kx, already checked against minK), before it is weighted by kx:
+  /// calcColor(closest hit, level − 1, kkx), or the background when the ray hits nothing.
+  ///
+  /// The hook of mini project 1: a tracer that replaces one secondary ray by a beam of rays
+  /// overrides this and averages the base version over the beam.
+  virtual Color secondaryColor(const HitContext& from, const Ray& secondary, int level,
+                               const Double3& kkx) const;
+
+  WhittedSettings settings_;
+  TraceStats* stats_ = nullptr;
+};
+
+}  // namespace rt

@@ -1,0 +1,40 @@
+#include "reflections/Optics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+Vector reflect(const Vector& v, const Vector& n) noexcept {
+  const Double3& vv = v.xyz();
+  const Double3& nn = n.xyz();
+  // |r| = |v| = 1: never the zero vector, so the Vector constructor cannot throw.
+  return Vector(vv - nn * (2 * vv.dot(nn)));
+}
+
+double schlick(double cosTheta, double n1, double n2) noexcept {
+  const double r = (n1 - n2) / (n1 + n2);
+  const double r0 = r * r;
+  const double m = 1 - std::clamp(cosTheta, 0.0, 1.0);
+  const double m2 = m * m;
+  return r0 + (1 - r0) * (m2 * m2 * m);
+}
+
+Refraction refract(const Vector& v, const Vector& n, double ior) noexcept {
+  const double nv = n.dot(v);
+  const bool entering = nv <= 0;
+  const double eta = entering ? 1 / ior : ior;           // η1/η2
+  const Double3 facing = entering ? n.xyz() : -n.xyz();  // N: the normal against v
+  const double cosI = std::min(1.0, std::abs(nv));
+  const double sin2T = eta * eta * (1 - cosI * cosI);
+  if (sin2T > 1) return {std::nullopt, 1.0, entering};  // total internal reflection
+  const double cosT = std::sqrt(1 - sin2T);
+  const Double3 t = v.xyz() * eta + facing * (eta * cosI - cosT);
+  // Schlick's cosine is the one on the side of the lower index.
+  const double n1 = entering ? 1 : ior, n2 = entering ? ior : 1;
+  const double cosSchlick = n1 <= n2 ? cosI : cosT;
+  // |t| = 1 for unit v and N (Snell's construction): never zero.
+  return {Vector(t).normalized(), schlick(cosSchlick, n1, n2), entering};
+}
+
+}  // namespace rt

@@ -1,0 +1,94 @@
+#include "reflections/WhittedTracer.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "reflections/Optics.h"
+
+namespace rt {
+
+void WhittedSettings::validate() const {
+  if (maxLevel < 1 || maxLevel > MAX_LEVEL_LIMIT) {
+    throw std::invalid_argument("WhittedSettings: maxLevel must be between 1 and " +
+                                std::to_string(MAX_LEVEL_LIMIT) + ", got " +
+                                std::to_string(maxLevel));
+  }
+  if (!(std::isfinite(minK) && minK >= 0)) {
+    throw std::invalid_argument("WhittedSettings: minK must be a non-negative finite number, got " +
+                                formatNumber(minK));
+  }
+}
+
+WhittedTracer::WhittedTracer(const LitScene& scene, const Intersectable* accelerator,
+                             const WhittedSettings& settings, const RayOffset& offset)
+    : ShadowTracer(scene, accelerator, offset), settings_(settings) {
+  settings_.validate();
+}
+
+Color WhittedTracer::traceRay(const Ray& ray) const {
+  if (stats_ != nullptr) stats_->primaryRays.fetch_add(1, std::memory_order_relaxed);
+  const std::optional<Hit> hit = intersector_.closestHit(ray);
+  if (!hit) return litScene_.background;
+  // The ambient light once, at the top (course 5784: Ia·kA), then the recursion from the top
+  // level with the initial weight (1,1,1).
+  return litScene_.ambientLight.intensity() +
+         calcColor(makeContext(*hit, ray), settings_.maxLevel, Double3::ONE);
+}
+
+Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k) const {
+  const Color local = localEffects(h, k);
+  return level == 1 ? local : local + globalEffects(h, level, k);
+}
+
+/*
+ * The course's global effects: a refracted ray weighted by kT and a reflected ray weighted by
+ * kR, both from the hit point (shifted off the surface), refraction first.
+ *
+ * With an index of refraction (ior != 1) Fresnel splits the transmitted fraction kT: of the light
+ * that the surface lets through (kT), the part R (Schlick) is reflected instead, so
+ *
+ *     refracted weight  kT' = (1 − R)·kT        along Snell's direction
+ *     reflected weight  kR' = kR + R·kT         along the mirror direction
+ *
+ * kR (the mirror coating) is kept as it is. On total internal reflection R = 1: all of kT goes
+ * to the reflected ray and no refracted ray is cast. ior == 1 takes the course's branch, so the
+ * default material renders bit for bit as the course (R would not be 0 there: Schlick's R(θ)
+ * grows towards grazing angles even when R0 = 0).
+ */
+Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3& k) const {
+  const Material& m = h.appearance->material;
+  if (m.ior == 1) {
+    return secondaryEffect(h, refractStraight(h.v), level, k, m.kT) +
+           secondaryEffect(h, reflect(h.v, h.normal), level, k, m.kR);
+  }
+  const Refraction refraction = refract(h.v, h.normal, m.ior);
+  const double r = refraction.reflectance;
+  const Color refracted = refraction.direction
+                              ? secondaryEffect(h, *refraction.direction, level, k, m.kT * (1 - r))
+                              : Color::BLACK;
+  return refracted + secondaryEffect(h, reflect(h.v, h.normal), level, k, m.kR + m.kT * r);
+}
+
+Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, int level,
+                                     const Double3& k, const Double3& kx) const {
+  const Double3 kkx = k * kx;
+  // The course's cut-off (all three channels below minK); a zero weight is never cast, also
+  // when minK is 0.
+  if (kkx.lowerThan(settings_.minK) || (kkx.x == 0 && kkx.y == 0 && kkx.z == 0)) {
+    return Color::BLACK;
+  }
+  return secondaryColor(h, offset_.ray(h.point, h.normal, dir), level, kkx) * kx;
+}
+
+Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, int level,
+                                    const Double3& kkx) const {
+  if (stats_ != nullptr) stats_->secondaryRays.fetch_add(1, std::memory_order_relaxed);
+  const std::optional<Hit> hit = intersector_.closestHit(secondary);
+  // A miss sees the background; the caller weights it by kx (the course's 5785 fix: 5784
+  // returned it unweighted).
+  if (!hit) return litScene_.background;
+  return calcColor(makeContext(*hit, secondary), level - 1, kkx);
+}
+
+}  // namespace rt
