@@ -1,0 +1,43 @@
+# cmake -DRT_EXE=path/to/rt -DSCENES_DIR=path/to/scenes -P ExportScenes.cmake
+#
+# Writes every built-in scene of `rt list` to SCENES_DIR/NAME.json with `rt export`, and removes
+# the .json files of scenes that no longer exist, so that scenes/ is exactly the built-in set.
+cmake_policy(VERSION 3.20)
+
+foreach(var RT_EXE SCENES_DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "ExportScenes.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+
+execute_process(COMMAND "${RT_EXE}" list OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "'${RT_EXE} list' failed (${rc})")
+endif()
+string(REPLACE "\n" ";" lines "${listing}")
+set(names "")
+foreach(line IN LISTS lines)
+  if(line MATCHES "^([^ ]+)")
+    list(APPEND names "${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+
+file(MAKE_DIRECTORY "${SCENES_DIR}")
+foreach(name IN LISTS names)
+  execute_process(COMMAND "${RT_EXE}" export "${name}" -o "${SCENES_DIR}/${name}.json"
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "'${RT_EXE} export ${name}' failed (${rc})")
+  endif()
+endforeach()
+
+file(GLOB existing "${SCENES_DIR}/*.json")
+foreach(path IN LISTS existing)
+  get_filename_component(name "${path}" NAME_WLE)
+  if(NOT name IN_LIST names)
+    message(STATUS "Removing ${path}: no built-in scene is called ${name}")
+    file(REMOVE "${path}")
+  endif()
+endforeach()
+list(LENGTH names count)
+message(STATUS "Exported ${count} built-in scenes into ${SCENES_DIR}")

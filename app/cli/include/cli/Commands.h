@@ -1,0 +1,75 @@
+#pragma once
+/// @file Commands.h
+/// The `rt` program as a library: runRt() is main() without the process (streams in, exit code
+/// out), so the tests can call it directly, and the pieces the commands share are testable on
+/// their own.
+///
+///   rt list                                   the built-in scenes, one per line
+///   rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet]
+///   rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y) [--width W] [--height H] [--tracer T]
+///   rt export NAME [-o FILE.json]
+///   rt --help | rt COMMAND --help | rt --version
+///
+/// Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).
+
+#include <atomic>
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "primitives/Ray.h"
+#include "scenefile/SceneDocument.h"
+
+namespace rt::cli {
+
+inline constexpr int EXIT_OK = 0;
+inline constexpr int EXIT_FAILURE_RUNTIME = 1;
+inline constexpr int EXIT_BAD_INPUT = 2;
+inline constexpr int EXIT_INTERRUPTED = 130;  ///< 128 + SIGINT, as shells report it
+
+/// Where a command writes, and how it is stopped.
+struct Io {
+  std::ostream& out;
+  std::ostream& err;
+  /// Progress is a percentage redrawn in place on a terminal, a plain line per 10% otherwise.
+  bool errIsTerminal = false;
+  /// Raised (by a SIGINT handler) to stop a render; nullptr: cannot be stopped.
+  const std::atomic<bool>* stop = nullptr;
+};
+
+/// Runs `rt` with args (without the program's name) and returns the exit code. Errors are one
+/// line on io.err starting with "rt: ".
+int runRt(std::span<const std::string> args, const Io& io);
+
+/// "rt 0.4.0" (the CMake project's version).
+std::string versionString();
+
+// ---- Pieces shared by the commands (and tested on their own) ----
+
+/// A built-in scene's name or a path ending in ".json", as a document.
+/// @throws UsageError for an unknown name (suggesting the nearest one); the scene-file library's
+///         SceneError (its message names file, line and column) for a bad file.
+SceneDocument loadSceneArgument(std::string_view scene);
+
+/// Where `rt render SCENE` writes without -o: NAME.png for a built-in scene, the file's name
+/// with .png instead of .json for a scene file; in the current directory either way.
+std::string defaultOutputPath(std::string_view scene);
+
+/// Refuses, before any work is done, an output path that cannot be written: a directory, a
+/// missing parent directory, or one where no file can be created (tried for real, with a
+/// temporary file that is removed again). @throws UsageError naming the path and the reason.
+void checkOutputWritable(const std::string& path, std::string_view what = "-o");
+
+/// Writes text to path through a temporary file beside it and a rename, so that a failure
+/// leaves any existing file untouched. @throws std::runtime_error naming the path.
+void writeFileAtomically(const std::string& path, std::string_view text);
+
+/// The JSON that `rt probe` prints for ray:
+/// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
+/// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals
+/// the outward geometric ones, name the geometry's name in the document or null, color the
+/// tracer's traceRay (unclamped).
+std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer);
+
+}  // namespace rt::cli

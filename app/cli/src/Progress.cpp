@@ -1,0 +1,90 @@
+#include "cli/Progress.h"
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <sstream>
+
+namespace rt::cli {
+
+namespace {
+constexpr auto kPollInterval = std::chrono::milliseconds(100);
+}
+
+std::string formatDuration(double seconds) {
+  char buf[64];
+  if (seconds < 10) {
+    std::snprintf(buf, sizeof buf, "%.3f s", seconds);
+  } else if (seconds < 60) {
+    std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+  } else if (seconds < 3600) {
+    const long s = std::lround(seconds);
+    std::snprintf(buf, sizeof buf, "%ld min %ld s", s / 60, s % 60);
+  } else {
+    const long m = std::lround(seconds / 60);
+    std::snprintf(buf, sizeof buf, "%ld h %ld min", m / 60, m % 60);
+  }
+  return buf;
+}
+
+ProgressMonitor::ProgressMonitor(std::ostream& err, Style style, const CountingTracer& counter,
+                                 std::uint64_t total, std::uint64_t rowLength)
+    : err_(err),
+      style_(style),
+      counter_(counter),
+      total_(total == 0 ? 1 : total),
+      rowLength_(rowLength == 0 ? 1 : rowLength),
+      start_(std::chrono::steady_clock::now()),
+      thread_([this] { run(); }) {}
+
+ProgressMonitor::~ProgressMonitor() { stop(); }
+
+void ProgressMonitor::stop() {
+  {
+    std::lock_guard lock(mutex_);
+    if (stopping_) return;
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+  report(true);
+}
+
+void ProgressMonitor::run() {
+  std::unique_lock lock(mutex_);
+  while (!wake_.wait_for(lock, kPollInterval, [this] { return stopping_; })) report(false);
+}
+
+void ProgressMonitor::report(bool last) {
+  const std::uint64_t done = std::min(counter_.count(), total_);
+  if (style_ == Style::Lines) {
+    // One line per 10% step reached; steps passed between two polls are all printed, so the
+    // log always reads 10%, 20%, ... in order.
+    const int decile = static_cast<int>(done * 10 / total_);
+    for (int d = lastDecile_ + 1; d <= decile; ++d) err_ << "rt: rendering " << d * 10 << "%\n";
+    if (decile > lastDecile_) err_.flush();
+    lastDecile_ = std::max(lastDecile_, decile);
+    return;
+  }
+  const std::uint64_t rows = done / rowLength_;
+  if (rows != lastRow_ || last) {
+    lastRow_ = rows;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    std::ostringstream line;
+    line << "\rrt: rendering " << (done * 100 / total_) << "% (" << rows << "/"
+         << total_ / rowLength_ << " rows";
+    if (elapsed > 0 && done > 0) {
+      const double rate = static_cast<double>(done) / elapsed;
+      line << ", " << static_cast<std::uint64_t>(rate) << " rays/s";
+      if (done < total_)
+        line << ", " << formatDuration(static_cast<double>(total_ - done) / rate) << " left";
+    }
+    line << ")\x1b[K";  // erase what a longer previous line left
+    err_ << line.str() << std::flush;
+    drewLine_ = true;
+  }
+  if (last && drewLine_) err_ << "\n" << std::flush;
+}
+
+}  // namespace rt::cli

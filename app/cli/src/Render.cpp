@@ -1,0 +1,135 @@
+// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet]
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include "CommandTable.h"
+#include "camera/Camera.h"
+#include "camera/ImageWriter.h"
+#include "cli/Progress.h"
+#include "cli/Tracers.h"
+
+namespace rt::cli {
+
+namespace {
+
+/// Refuses an image that cannot fit in memory before the camera allocates it: an Image keeps a
+/// Color (three doubles) per pixel, and the PNG writer an RGB byte triple.
+void checkImageFits(int nX, int nY) {
+  const double bytes = static_cast<double>(nX) * nY * (sizeof(Color) + 3);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0) return;  // unknown: let the allocation decide
+  const double memory = static_cast<double>(pages) * static_cast<double>(pageSize);
+  if (bytes > memory) {
+    std::ostringstream os;
+    os.precision(3);
+    os << "a " << nX << "x" << nY << " image needs " << bytes / (1u << 30)
+       << " GiB, more than this machine's " << memory / (1u << 30) << " GiB of memory";
+    throw UsageError(os.str());
+  }
+}
+
+int render(const ParsedArgs& args, const Io& io) {
+  // Everything is checked before the first ray: the scene, the options, the output path and the
+  // image's size. A mistake costs no render time.
+  const std::string& sceneArg = args.positional[0];
+  SceneDocument doc = loadSceneArgument(sceneArg);
+  applySceneOverrides(args, doc);
+  const std::string* outArg = args.value("--output");
+  const std::string output = outArg ? *outArg : defaultOutputPath(sceneArg);
+  if (!output.ends_with(".png"))
+    throw UsageError("-o: the image is written as PNG, so its name must end in .png; got '" +
+                     output + "'");
+  checkOutputWritable(output, outArg ? "-o" : "the default output");
+  const int nX = doc.camera.nX, nY = doc.camera.nY;
+  checkImageFits(nX, nY);
+
+  const TracerKind& kind = findTracer(doc.render.tracer);
+  TraceStats stats;
+  const std::unique_ptr<RayTracer> tracer = kind.make(doc, &stats);
+  auto counter = std::make_shared<CountingTracer>(*tracer);
+  Camera camera = doc.camera.builder()
+                      .setResolution(nX, nY)
+                      .setRayTracer(counter)
+                      .setImageWriter(std::make_shared<PngImageWriter>())
+                      .build();
+
+  const bool quiet = args.has("--quiet");
+  const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
+  const auto start = std::chrono::steady_clock::now();
+  bool interrupted = false;
+  {
+    std::unique_ptr<ProgressMonitor> progress;
+    if (!quiet) {
+      io.err << "rt: rendering " << sceneArg << " (" << nX << "x" << nY << ", tracer " << kind.name
+             << ") to " << output << "\n";
+      progress = std::make_unique<ProgressMonitor>(
+          io.err,
+          io.errIsTerminal ? ProgressMonitor::Style::Terminal : ProgressMonitor::Style::Lines,
+          *counter, total, static_cast<std::uint64_t>(nX));
+    }
+    try {
+      camera.renderImage(io.stop);
+    } catch (const RenderInterrupted&) {
+      interrupted = true;
+    }
+    // A Ctrl-C that arrives after the last row still means "stop": nothing is written.
+    if (io.stop && io.stop->load()) interrupted = true;
+  }  // the progress thread is stopped here, before anything else is printed
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (interrupted) {
+    io.err << "rt: interrupted after " << counter->count() << " of " << total
+           << " primary rays; nothing written to " << output << "\n";
+    return EXIT_INTERRUPTED;
+  }
+  camera.writeToImage(output);
+  if (!quiet) {
+    // The rate counts primary rays (pixels), the figure that compares across tracers; the
+    // Whitted tracer also says how many reflected and refracted rays it cast.
+    const double rate = seconds > 0 ? static_cast<double>(total) / seconds : 0;
+    io.err << "rt: wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
+           << total << " primary rays";
+    if (const std::uint64_t secondary = stats.secondaryRays.load(); secondary > 0)
+      io.err << " (+" << secondary << " reflected/refracted)";
+    io.err << " in " << formatDuration(seconds) << " (" << static_cast<std::uint64_t>(rate)
+           << " primary rays/s)\n";
+  }
+  return EXIT_OK;
+}
+
+}  // namespace
+
+Command renderCommand() {
+  std::string tracers;
+  for (const TracerKind& t : tracerKinds())
+    tracers += "  " + std::string(t.name) + std::string(9 - t.name.size(), ' ') + "(" +
+               std::string(t.stage.substr(0, t.stage.find('_'))) + ") " +
+               std::string(t.description) + "\n";
+  return {{"render",
+           "render a scene to a PNG image",
+           {"SCENE"},
+           {{"--output", "-o", 1, "FILE.png", "where to write the image (default: SCENE.png)"},
+            {"--width", "", 1, "W", "image width in pixels, 1..32768 (default: the scene's)"},
+            {"--height", "", 1, "H", "image height in pixels, 1..32768 (default: the scene's)"},
+            {"--tracer", "", 1, "T", "which stage's tracer renders it (default: the scene's)"},
+            {"--quiet", "-q", 0, "", "print nothing but errors"}},
+           "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
+           "options override what the scene sets. Without -o the image is written to SCENE.png\n"
+           "in the current directory (for a scene file: its name with .png for .json).\n\n"
+           "Tracers (a built-in scene's default is its stage's; a file's is render.tracer):\n" +
+               tracers +
+               "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
+               "resolution and that the output's directory can be written to. Progress goes to\n"
+               "stderr (a percentage on a terminal, a line per 10% otherwise), then the wall\n"
+               "time and the rate of primary rays. The image is written to a temporary file and\n"
+               "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
+               "existing FILE.png as it was, and exits with code 130.\n"},
+          render};
+}
+
+}  // namespace rt::cli

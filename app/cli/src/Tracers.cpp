@@ -1,0 +1,54 @@
+#include "cli/Tracers.h"
+
+#include <vector>
+
+#include "cli/ArgParser.h"
+#include "lighting/PhongTracer.h"
+#include "reflections/WhittedTracer.h"
+#include "shadows/ShadowTracer.h"
+
+namespace rt::cli {
+
+namespace {
+
+const TracerKind kTracers[] = {
+    {"ambient", "stage04_camera", "the ambient light wherever a ray hits a shape",
+     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+       return std::make_unique<AmbientTracer>(doc.scene);
+     }},
+    {"phong", "stage05_lighting", "emission, ambient light and Phong shading; no shadows",
+     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+       return std::make_unique<PhongTracer>(doc.scene);
+     }},
+    {"shadow", "stage06_shadows", "Phong shading with shadows, partial behind transparent shapes",
+     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+       return std::make_unique<ShadowTracer>(doc.scene);
+     }},
+    {"whitted", "stage07_reflections", "shadows plus recursive reflection and refraction",
+     [](const SceneDocument& doc, TraceStats* stats) -> std::unique_ptr<RayTracer> {
+       auto tracer = std::make_unique<WhittedTracer>(
+           doc.scene, nullptr, WhittedSettings{doc.render.maxLevel, doc.render.minK});
+       tracer->setStats(stats);
+       return tracer;
+     }},
+};
+
+}  // namespace
+
+std::span<const TracerKind> tracerKinds() { return kTracers; }
+
+const TracerKind& findTracer(std::string_view name, std::string_view what) {
+  std::vector<std::string_view> names;
+  for (const TracerKind& t : kTracers) {
+    if (t.name == name) return t;
+    names.push_back(t.name);
+  }
+  std::string message = std::string(what) + ": unknown tracer '" + std::string(name) + "'";
+  if (const std::string near = nearestName(name, names); !near.empty())
+    message += "; did you mean '" + near + "'?";
+  message += " (known:";
+  for (std::string_view n : names) message += " " + std::string(n);
+  throw UsageError(message + ")");
+}
+
+}  // namespace rt::cli

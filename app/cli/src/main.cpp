@@ -1,0 +1,35 @@
+// The `rt` executable: the process around rt::cli::runRt (arguments, streams, Ctrl-C).
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/Commands.h"
+
+namespace {
+
+// Raised by Ctrl-C; the render checks it once per row. A lock-free atomic is the one kind of
+// shared state a signal handler may touch.
+std::atomic<bool> gStop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void onInterrupt(int) {
+  gStop.store(true);
+  // A second Ctrl-C ends the process at once, as if rt had no handler.
+  std::signal(SIGINT, SIG_DFL);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  // Only a render is worth stopping gracefully; the other commands end at once, as usual.
+  if (!args.empty() && args.front() == "render") std::signal(SIGINT, onInterrupt);
+  const rt::cli::Io io{std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1, &gStop};
+  const int code = rt::cli::runRt(args, io);
+  std::cout.flush();
+  return code;
+}

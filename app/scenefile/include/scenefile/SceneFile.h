@@ -1,0 +1,84 @@
+#pragma once
+/// @file SceneFile.h
+/// Reading and writing scene files (JSON, format in docs/scene-format.md).
+///
+/// Reading is strict: every error is reported once, as a SceneError whose message names the
+/// file, the line and column of the offending value (or its JSON path when no position is known)
+/// and what was expected:
+///
+///     scenes/x.json:14:9: geometries[3].radius: expected a positive number, got -2
+///
+/// Writing produces a file that reads back to an identical document (every number written so
+/// that it round-trips exactly, materials inline or by name as in the document, names kept).
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scenefile/SceneDocument.h"
+
+namespace rt {
+
+/// A scene file that cannot be read or does not describe a valid scene.
+struct SceneError : std::runtime_error {
+  /// An error at a place in a file. line and column are 1-based; 0 when no position is known,
+  /// and the message then reads "FILE: PATH: DETAIL". An empty path is the document itself.
+  SceneError(std::string file, int line, int column, std::string path, std::string detail);
+  /// An error that concerns the file as a whole ("cannot read FILE: reason").
+  explicit SceneError(const std::string& message);
+
+  std::string file;    ///< the source name given to parseScene, or the path given to loadScene
+  int line = 0;        ///< 1-based line of the offending value; 0 when unknown
+  int column = 0;      ///< 1-based column (in characters, not bytes); 0 when unknown
+  std::string path;    ///< JSON path of the offending value ("geometries[3].radius")
+  std::string detail;  ///< what was expected and what was found
+
+  /// "FILE:LINE:COL: PATH: DETAIL", dropping the parts that are unknown or empty.
+  static std::string format(const std::string& file, int line, int column, const std::string& path,
+                            const std::string& detail);
+};
+
+/// Reads a scene from JSON text. sourceName is what the messages call the file.
+/// @throws SceneError for malformed JSON or anything the format or a constructor rejects.
+SceneDocument parseScene(std::string_view text, const std::string& sourceName);
+
+/// Reads the file at path (at most MAX_SCENE_FILE_BYTES) and parses it.
+/// @throws SceneError "cannot read PATH: reason" when the file cannot be read, and as
+///         parseScene for its contents.
+SceneDocument loadScene(const std::string& path);
+
+/// The largest scene file loadScene accepts: 64 MiB.
+inline constexpr std::size_t MAX_SCENE_FILE_BYTES = std::size_t{64} << 20;
+
+/// The document as JSON, in the format parseScene reads, keys in the documented order.
+/// Directions (plane normals, axis and light directions) are stored normalised by the shapes;
+/// each is written as a vector whose normalisation gives exactly the stored one (the shortest
+/// such vector found among small integer ratios, the vector itself and its multiples), so that
+/// reading the export rebuilds the same shapes bit for bit.
+/// @throws std::logic_error for a document that cannot be written as a scene file: a camera
+///         with neither target nor direction, name lists longer than the geometry list, or a
+///         geometry whose material name is unknown or names a different material.
+nlohmann::ordered_json toJson(const SceneDocument& doc);
+
+/// toJson(doc) as text: two-space indentation, arrays of numbers on one line, final newline.
+std::string dumpScene(const SceneDocument& doc);
+
+/// The values of render.tracer the loader accepts, in the order of the course.
+std::span<const std::string_view> knownTracers();
+
+/// One key of the format, as the loader's tables define it (for documentation and its test).
+struct SceneKeyInfo {
+  std::string object;       ///< "camera", "geometry sphere", "light spot", "material", ...
+  std::string key;          ///< the key's name
+  bool required = false;    ///< true when the key must be given
+  std::string defaultText;  ///< the default as JSON, or a phrase ("none") for optional keys
+};
+
+/// Every key of every object type of the format, in table order.
+std::vector<SceneKeyInfo> sceneFormatKeys();
+
+}  // namespace rt

@@ -1,0 +1,217 @@
+#include "Readers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace rt::scenefile {
+
+namespace {
+
+bool isArrayOf(const Node& n, std::size_t size) {
+  return n.json().is_array() && n.json().size() == size;
+}
+
+std::string integerDescription(int lo, int hi) {
+  if (hi == INT_MAX)
+    return lo == 0 ? "a non-negative integer" : "an integer of at least " + std::to_string(lo);
+  return "an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+}
+
+/// Optimal string alignment distance (Levenshtein plus adjacent transpositions), ignoring case;
+/// any value above bound is returned as bound + 1 (the search stops as soon as it gets there).
+std::size_t editDistance(std::string_view a, std::string_view b, std::size_t bound) {
+  const std::size_t lengthGap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (lengthGap > bound) return bound + 1;
+  const auto lower = [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  };
+  // Three rows of the dynamic-programming table: i - 2, i - 1 and i.
+  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    std::size_t rowMin = current[0];
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost});
+      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) &&
+          lower(a[i - 2]) == lower(b[j - 1]))
+        current[j] = std::min(current[j], before[j - 2] + 1);
+      rowMin = std::min(rowMin, current[j]);
+    }
+    if (rowMin > bound) return bound + 1;
+    std::swap(before, previous);
+    std::swap(previous, current);
+  }
+  return std::min(previous[b.size()], bound + 1);
+}
+
+/// Names listed in a message: at most this many, then "and N more".
+constexpr std::size_t LISTED_NAMES = 12;
+
+}  // namespace
+
+double readNumber(const Node& n) {
+  if (!n.json().is_number()) n.expected("a number");
+  const double v = n.json().get<double>();
+  if (!std::isfinite(v)) n.expected("a finite number");
+  return v;
+}
+
+double readPositive(const Node& n) {
+  if (!n.json().is_number()) n.expected("a positive number");
+  const double v = readNumber(n);
+  if (!(v > 0)) n.expected("a positive number");
+  return v;
+}
+
+double readNonNegative(const Node& n) {
+  if (!n.json().is_number()) n.expected("a non-negative number");
+  const double v = readNumber(n);
+  if (!(v >= 0)) n.expected("a non-negative number");
+  return v;
+}
+
+double readNumberIn(const Node& n, double lo, double hi) {
+  const std::string what = "a number from " + formatNumber(lo) + " to " + formatNumber(hi);
+  if (!n.json().is_number()) n.expected(what);
+  const double v = readNumber(n);
+  if (!(v >= lo && v <= hi)) n.expected(what);
+  return v;
+}
+
+int readInteger(const Node& n, int lo, int hi) {
+  const Json& j = n.json();
+  const bool inRange = [&] {
+    if (j.is_number_unsigned())
+      return j.get<std::uint64_t>() <= static_cast<std::uint64_t>(hi) &&
+             static_cast<std::int64_t>(j.get<std::uint64_t>()) >= lo;
+    if (j.is_number_integer()) return j.get<std::int64_t>() >= lo && j.get<std::int64_t>() <= hi;
+    if (j.is_number_float()) {
+      const double v = j.get<double>();
+      return v == std::floor(v) && v >= lo && v <= hi;  // false for infinities
+    }
+    return false;
+  }();
+  if (!inRange) n.expected(integerDescription(lo, hi));
+  return j.is_number_float() ? static_cast<int>(j.get<double>())
+                             : static_cast<int>(j.get<std::int64_t>());
+}
+
+std::string readString(const Node& n) {
+  if (!n.json().is_string()) n.expected("a string");
+  return n.json().get<std::string>();
+}
+
+Point readPoint(const Node& n) {
+  if (!isArrayOf(n, 3)) n.expected("a point [x,y,z]");
+  double xyz[3];
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { xyz[i++] = readNumber(e); });
+  return Point(xyz[0], xyz[1], xyz[2]);
+}
+
+Vector readDirection(const Node& n) {
+  if (!isArrayOf(n, 3)) n.expected("a vector [x,y,z]");
+  double xyz[3];
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { xyz[i++] = readNumber(e); });
+  const Double3 d(xyz[0], xyz[1], xyz[2]);
+  // The course's rule: a vector whose components are all zero (below 2^-40) cannot exist.
+  if (d.isZero()) n.expected("a non-zero vector [x,y,z]");
+  // Its normalisation must exist too: |d|^2 overflows for components beyond about 1e154.
+  if (!std::isfinite(d.lengthSquared()) || !(d.lengthSquared() > 0))
+    n.expected("a vector [x,y,z] of finite length");
+  return Vector(d);
+}
+
+Color readColor(const Node& n) {
+  if (!isArrayOf(n, 3)) n.expected("a colour [r,g,b]");
+  double rgb[3];
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { rgb[i++] = readNonNegative(e); });
+  return Color(rgb[0], rgb[1], rgb[2]);
+}
+
+Double3 readCoefficient(const Node& n) {
+  if (n.json().is_number()) return Double3(readNonNegative(n));
+  if (!isArrayOf(n, 3)) n.expected("a coefficient (a number or [r,g,b])");
+  double k[3];
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { k[i++] = readNonNegative(e); });
+  return Double3(k[0], k[1], k[2]);
+}
+
+std::vector<Point> readPoints(const Node& n, std::size_t minCount, std::size_t maxCount) {
+  const bool sizeOk =
+      n.json().is_array() && n.json().size() >= minCount && n.json().size() <= maxCount;
+  if (!sizeOk) {
+    if (minCount == maxCount)
+      n.expected("an array of " + std::to_string(minCount) + " points [x,y,z]");
+    n.expected("an array of at least " + std::to_string(minCount) + " points [x,y,z]");
+  }
+  std::vector<Point> points;
+  points.reserve(n.json().size());
+  n.forEachElement([&](const Node& e) { points.push_back(readPoint(e)); });
+  return points;
+}
+
+std::array<double, 2> readPositivePair(const Node& n) {
+  if (!isArrayOf(n, 2)) n.expected("two positive numbers [width,height]");
+  std::array<double, 2> pair{};
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { pair[i++] = readPositive(e); });
+  return pair;
+}
+
+std::array<int, 2> readIntegerPair(const Node& n, int lo, int hi) {
+  if (!isArrayOf(n, 2)) n.expected("two integers [nX,nY]");
+  std::array<int, 2> pair{};
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { pair[i++] = readInteger(e, lo, hi); });
+  return pair;
+}
+
+std::string readChoice(const Node& n, std::string_view what,
+                       std::span<const std::string_view> choices) {
+  const std::string expected = std::string(what) + " (" + joinNames(choices) + ")";
+  if (!n.json().is_string()) n.expected(expected);
+  const std::string value = n.json().get<std::string>();
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  std::string detail = "expected " + expected + ", got " + n.describe();
+  if (const std::string_view near = nearestName(value, choices); !near.empty())
+    detail += "; did you mean '" + std::string(near) + "'?";
+  n.fail(detail);
+}
+
+std::string_view nearestName(std::string_view name, std::span<const std::string_view> known) {
+  constexpr std::size_t MAX_EDITS = 3;
+  std::string_view best;
+  std::size_t bestDistance = MAX_EDITS + 1;
+  for (std::string_view k : known) {
+    // A plausible typo: one edit in a short name, up to a third of a longer one (at most 3).
+    const std::size_t allowed = std::clamp<std::size_t>(k.size() / 3, 1, MAX_EDITS);
+    const std::size_t d = editDistance(name, k, allowed);
+    if (d <= allowed && d < bestDistance) {
+      best = k;
+      bestDistance = d;
+    }
+  }
+  return best;
+}
+
+std::string joinNames(std::span<const std::string_view> names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < LISTED_NAMES; ++i) {
+    if (i) out += ", ";
+    out += names[i];
+  }
+  if (names.size() > LISTED_NAMES)
+    out += " and " + std::to_string(names.size() - LISTED_NAMES) + " more";
+  return out;
+}
+
+}  // namespace rt::scenefile

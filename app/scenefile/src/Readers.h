@@ -1,0 +1,57 @@
+#pragma once
+/// @file Readers.h
+/// Readers of the format's value types. Each checks its node and returns the value, or throws
+/// a SceneError at the node: "expected WHAT, got VALUE".
+
+#include <array>
+#include <climits>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "Node.h"
+#include "primitives/Color.h"
+#include "primitives/Double3.h"
+#include "primitives/Point.h"
+#include "primitives/Vector.h"
+
+namespace rt::scenefile {
+
+/// Any finite number. (The first pass already rejects 1e999; this guards defaults and DOMs.)
+double readNumber(const Node& n);
+/// A finite number > 0.
+double readPositive(const Node& n);
+/// A finite number >= 0.
+double readNonNegative(const Node& n);
+/// A finite number in [lo, hi].
+double readNumberIn(const Node& n, double lo, double hi);
+/// An integral number in [lo, hi] (1e2 and 100.0 count as 100).
+int readInteger(const Node& n, int lo, int hi = INT_MAX);
+std::string readString(const Node& n);
+/// [x,y,z] of finite numbers.
+Point readPoint(const Node& n);
+/// [x,y,z] of finite numbers, not the zero vector, of finite length.
+Vector readDirection(const Node& n);
+/// [r,g,b] of non-negative numbers (the course's 0-255 scale; brighter than 255 allowed).
+Color readColor(const Node& n);
+/// A coefficient: a non-negative number (the same for r, g and b) or [r,g,b].
+Double3 readCoefficient(const Node& n);
+/// An array of points, with at least minCount and at most maxCount of them.
+std::vector<Point> readPoints(const Node& n, std::size_t minCount, std::size_t maxCount);
+/// [a,b] of positive numbers.
+std::array<double, 2> readPositivePair(const Node& n);
+/// [a,b] of integers in [lo, hi].
+std::array<int, 2> readIntegerPair(const Node& n, int lo, int hi);
+/// One of the strings in choices; otherwise "expected WHAT (a, b, c), got "x"; did you mean
+/// 'y'?".
+std::string readChoice(const Node& n, std::string_view what,
+                       std::span<const std::string_view> choices);
+
+/// The known name nearest to name (case-insensitive optimal string alignment distance), when
+/// near enough to be a plausible typo; empty otherwise.
+std::string_view nearestName(std::string_view name, std::span<const std::string_view> known);
+/// "a, b, c"; after 12 names, "and N more".
+std::string joinNames(std::span<const std::string_view> names);
+
+}  // namespace rt::scenefile

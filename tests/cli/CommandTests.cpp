@@ -1,0 +1,382 @@
+// Tests of `rt` through its library (rt::cli::runRt and the pieces it is made of): the same
+// code as the executable, without a process per case.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "RtProcess.h"
+#include "camera/CourseScenes.h"
+#include "cli/BuiltinScenes.h"
+#include "cli/Commands.h"
+#include "cli/Tracers.h"
+#include "geometries/Plane.h"
+#include "geometries/Sphere.h"
+#include "lighting/CourseScenes.h"
+#include "lighting/PhongTracer.h"
+#include "reflections/CourseScenes.h"
+#include "scenefile/SceneFile.h"
+#include "shadows/CourseScenes.h"
+
+#ifndef RT_SCENES_DIR
+#error "RT_SCENES_DIR must name the repository's scenes/ folder"
+#endif
+#ifndef RT_PROJECT_VERSION
+#error "RT_PROJECT_VERSION must be the CMake project's version"
+#endif
+
+namespace rt::cli {
+namespace {
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+Outcome run(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int code = runRt(args, Io{out, err});
+  return {code, out.str(), err.str()};
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The built-in scenes
+
+TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
+  // TC01: the scene count is stage 4's one scene plus every entry of the stages' tables
+  const std::size_t expected =
+      1 + lightingScenes().size() + shadowScenes().size() + reflectionScenes().size();
+  EXPECT_EQ(builtinScenes().size(), expected);
+  // TC02: every table entry is there under its own name, with its stage's tracer
+  const auto expectEntries = [](std::span<const CourseScene> table, const char* tracer) {
+    for (const CourseScene& entry : table) {
+      const BuiltinScene* s = findBuiltinScene(entry.name);
+      ASSERT_NE(s, nullptr) << entry.name;
+      EXPECT_EQ(s->description, entry.description);
+      EXPECT_EQ(s->tracer, tracer) << entry.name;
+      EXPECT_EQ(s->make().render.tracer, tracer) << entry.name;
+    }
+  };
+  expectEntries(lightingScenes(), "phong");
+  expectEntries(shadowScenes(), "shadow");
+  expectEntries(reflectionScenes(), "whitted");
+  // TC03: stage 4's scene is rendered by the ambient tracer
+  ASSERT_NE(findBuiltinScene("two-color"), nullptr);
+  EXPECT_EQ(findBuiltinScene("two-color")->make().render.tracer, "ambient");
+  // TC04: names are unique, non-empty, without spaces; every description is non-empty
+  std::set<std::string> names;
+  for (const BuiltinScene& s : builtinScenes()) {
+    EXPECT_TRUE(names.insert(s.name).second) << s.name;
+    EXPECT_FALSE(s.name.empty());
+    EXPECT_EQ(s.name.find(' '), std::string::npos) << s.name;
+    EXPECT_FALSE(s.description.empty()) << s.name;
+  }
+  // TC11: an unknown name
+  EXPECT_EQ(findBuiltinScene("no-such-scene"), nullptr);
+}
+
+TEST(BuiltinScenesTests, twoColorDocumentIsTheCourseScene) {
+  // TC01: the document carries stage 4's scene and camera unchanged, as a LitScene whose every
+  // shape has the default appearance
+  const SceneSetup<Scene> course = twoColorScene();
+  const SceneDocument doc = findBuiltinScene("two-color")->make();
+  EXPECT_EQ(doc.scene.geometries.size(), course.scene.geometries.size());
+  EXPECT_EQ(doc.scene.appearances.size(), course.scene.geometries.size());
+  EXPECT_EQ(doc.scene.background, course.scene.background);
+  EXPECT_EQ(doc.scene.ambientLight.intensity(), course.scene.ambientLight.intensity());
+  EXPECT_EQ(doc.camera.nX, course.camera.nX);
+  EXPECT_EQ(doc.camera.nY, course.camera.nY);
+  EXPECT_EQ(doc.geometryNames.size(), course.scene.geometries.size());
+  EXPECT_EQ(doc.geometryMaterialNames.size(), course.scene.geometries.size());
+}
+
+TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {
+  // TC01: --tracer and a scene file's render.tracer accept the same names, in the same order
+  std::vector<std::string_view> ours;
+  for (const TracerKind& t : tracerKinds()) ours.push_back(t.name);
+  const std::span<const std::string_view> format = knownTracers();
+  EXPECT_EQ(ours, std::vector<std::string_view>(format.begin(), format.end()));
+}
+
+// ---------------------------------------------------------------------------------------------
+// rt list, --help, --version, usage errors
+
+TEST(CommandTests, listPrintsOneLinePerSceneNameFirst) {
+  const Outcome r = run({"list"});
+  // TC01: exit 0, nothing on stderr
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.err, "");
+  // TC02: one line per built-in scene, in order: the name, two or more spaces, the description
+  const std::vector<std::string> got = lines(r.out);
+  ASSERT_EQ(got.size(), builtinScenes().size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const BuiltinScene& s = builtinScenes()[i];
+    ASSERT_TRUE(got[i].starts_with(s.name + "  ")) << got[i];
+    EXPECT_EQ(got[i].substr(got[i].find_first_not_of(' ', s.name.size())), s.description);
+  }
+  // TC11: extra arguments are refused
+  const Outcome extra = run({"list", "more"});
+  EXPECT_EQ(extra.code, 2);
+  EXPECT_EQ(extra.err, "rt: rt list: unexpected argument 'more' (see rt list --help)\n");
+}
+
+TEST(CommandTests, helpAndVersion) {
+  // TC01: --version prints the CMake project's version
+  Outcome r = run({"--version"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_EQ(r.out, std::string("rt ") + RT_PROJECT_VERSION + "\n");
+  // TC02: rt --help names every command
+  r = run({"--help"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* command : {"list", "render", "probe", "export"})
+    EXPECT_NE(r.out.find(std::string("\n  ") + command + " "), std::string::npos) << command;
+  // TC03: rt render --help states the default output and every option
+  r = run({"render", "--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_TRUE(r.out.starts_with("Usage: rt render SCENE [OPTIONS]\n")) << r.out;
+  for (const char* text : {"SCENE.png", "--width W", "--height H", "--tracer T", "--quiet",
+                           "-o, --output FILE.png", "whitted", "130"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+  // TC04: the other commands' help
+  for (const char* command : {"list", "probe", "export"}) {
+    r = run({command, "--help"});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(r.out.starts_with(std::string("Usage: rt ") + command)) << r.out;
+  }
+  // TC11: no command at all
+  r = run({});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "rt: missing COMMAND (see rt --help)\n");
+}
+
+TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
+  struct Case {
+    const char* partition;
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      // TC01: an unknown command, with a suggestion
+      {"TC01",
+       {"rendr", "two-color"},
+       "rt: unknown command 'rendr'; did you mean 'render'? (see rt --help)\n"},
+      // TC02: an unknown scene, with a suggestion
+      {"TC02",
+       {"render", "two-colour"},
+       "rt: unknown scene 'two-colour'; did you mean 'two-color'? (rt list shows the built-in "
+       "scenes; a scene file ends in .json)\n"},
+      // TC03: an unknown scene that resembles nothing
+      {"TC03",
+       {"render", "nebula"},
+       "rt: unknown scene 'nebula' (rt list shows the built-in scenes; a scene file ends in "
+       ".json)\n"},
+      // TC04: an unknown option
+      {"TC04",
+       {"render", "two-color", "--fast"},
+       "rt: unknown option '--fast' for rt render (see rt render --help)\n"},
+      // TC05: a width that is not a number
+      {"TC05",
+       {"render", "two-color", "--width", "wide"},
+       "rt: --width: expected an integer from 1 to 32768, got 'wide'\n"},
+      // TC06: an unknown tracer
+      {"TC06",
+       {"render", "two-color", "--tracer", "phog"},
+       "rt: --tracer: unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong shadow "
+       "whitted)\n"},
+      // TC07: an output that is not a PNG
+      {"TC07",
+       {"render", "two-color", "-o", "x.jpg"},
+       "rt: -o: the image is written as PNG, so its name must end in .png; got 'x.jpg'\n"},
+      // TC08: probe without a ray
+      {"TC08",
+       {"probe", "two-color"},
+       "rt: missing --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)\n"},
+      // TC09: probe with both a ray and a pixel
+      {"TC09",
+       {"probe", "two-color", "--pixel", "1,1", "--ray", "0,0,0", "0,0,-1"},
+       "rt: give only one of --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)\n"},
+      // TC10: a zero ray direction
+      {"TC10",
+       {"probe", "two-color", "--ray", "0,0,0", "0,0,0"},
+       "rt: --ray direction: must not be the zero vector, got '0,0,0'\n"},
+      // TC11: a ray origin with two numbers
+      {"TC11",
+       {"probe", "two-color", "--ray", "0,0", "0,0,-1"},
+       "rt: --ray origin: expected 3 comma-separated numbers, got '0,0'\n"},
+      // TC12: export of a name that is not a built-in scene
+      {"TC12",
+       {"export", "nebula"},
+       "rt: unknown scene 'nebula' (rt list shows the built-in scenes)\n"},
+      // TC13: export to a file that is not .json
+      {"TC13",
+       {"export", "two-color", "-o", "x.txt"},
+       "rt: -o: a scene file's name must end in .json; got 'x.txt'\n"},
+      // TC21: a width one beyond 2^15 is refused before anything is allocated
+      {"TC21",
+       {"render", "two-color", "--width", "32769"},
+       "rt: --width: expected an integer from 1 to 32768, got '32769'\n"},
+      // TC22: a height of zero
+      {"TC22",
+       {"render", "two-color", "--height", "0"},
+       "rt: --height: expected an integer from 1 to 32768, got '0'\n"},
+      // TC23: --pixel one column beyond the (overridden) image
+      {"TC23",
+       {"probe", "two-color", "--width", "10", "--pixel", "10,0"},
+       "rt: --pixel X: expected an integer from 0 to 9, got '10'\n"},
+  };
+  for (const Case& c : cases) {
+    const Outcome r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.partition;
+    EXPECT_EQ(r.err, c.message) << c.partition;
+    EXPECT_EQ(r.out, "") << c.partition;
+  }
+}
+
+TEST(CommandTests, defaultOutputPath) {
+  // TC01: a built-in scene: NAME.png in the current directory
+  EXPECT_EQ(defaultOutputPath("two-color"), "two-color.png");
+  // TC02: a scene file: its name, .png for .json, in the current directory
+  EXPECT_EQ(defaultOutputPath("some/dir/room.json"), "room.png");
+}
+
+TEST(CommandTests, renderStoppedBeforeItsFirstRowWritesNothing) {
+  const std::string dir = test::freshDirectory("renderStopped");
+  const std::string out = dir + "/out.png";
+  { std::ofstream(out) << "the previous image"; }
+  // TC01: the stop flag is already raised (Ctrl-C during loading): exit 130, no ray traced,
+  // the existing file untouched
+  std::ostringstream o, e;
+  const std::atomic<bool> stop{true};
+  const int code = runRt(std::vector<std::string>{"render", "two-color", "-o", out, "--width", "10",
+                                                  "--height", "10", "--quiet"},
+                         Io{o, e, false, &stop});
+  EXPECT_EQ(code, 130);
+  EXPECT_EQ(e.str(),
+            "rt: interrupted after 0 of 100 primary rays; nothing written to " + out + "\n");
+  EXPECT_EQ(test::readFile(out), "the previous image");
+}
+
+// ---------------------------------------------------------------------------------------------
+// probe's JSON
+
+/// A sphere of radius 2 centred on the ray (-1,0.5,-2) + t(0,0,1) at z = 5, and a plane z = 9
+/// facing the ray's origin: every value of the answer is exact in binary.
+SceneDocument probeScene() {
+  SceneDocument doc;
+  doc.scene.ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
+  doc.scene.add(Sphere(Point(-1, 0.5, 5), 2), Color(300, 20, 20));
+  doc.scene.add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
+  doc.geometryNames = {"ball \"A\"", ""};
+  doc.geometryMaterialNames = {std::nullopt, std::nullopt};
+  return doc;
+}
+
+TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
+  const SceneDocument doc = probeScene();
+  const PhongTracer tracer(doc.scene);
+  // TC01: a ray that crosses the sphere through its centre, then the plane: three hits in order
+  // of t, outward normals, names (null when none, escaped), and the colour = emission + Ia·kA =
+  // (300+50, 20+50, 20+50), not clamped to 255
+  EXPECT_EQ(probeJson(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\"t\": 5, \"point\": [-1, 0.5, 3], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 9, \"point\": [-1, 0.5, 7], \"normal\": [0, 0, 1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
+            "\"name\": null}\n"
+            "  ],\n"
+            "  \"color\": [350, 70, 70]\n"
+            "}\n");
+  // TC02: a ray that misses everything: no hits, the background
+  EXPECT_EQ(probeJson(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, -1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, -1]},\n"
+            "  \"hits\": [],\n"
+            "  \"color\": [0, 0, 0]\n"
+            "}\n");
+}
+
+// ---------------------------------------------------------------------------------------------
+// scenes/ and the output checks
+
+TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
+  namespace fs = std::filesystem;
+  const fs::path dir = RT_SCENES_DIR;
+  // TC01: scenes/NAME.json is the current export of every built-in scene
+  for (const BuiltinScene& s : builtinScenes()) {
+    const fs::path file = dir / (s.name + ".json");
+    ASSERT_TRUE(fs::exists(file)) << file
+                                  << " is missing; run: cmake --build BUILD --target export-scenes";
+    EXPECT_EQ(test::readFile(file.string()), dumpScene(s.make()))
+        << file << " is out of date; run: cmake --build BUILD --target export-scenes";
+  }
+  // TC02: scenes/ holds no scene file that is not a built-in scene
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() == ".json") {
+      EXPECT_NE(findBuiltinScene(e.path().stem().string()), nullptr)
+          << e.path() << " is no built-in scene; export-scenes removes it";
+    }
+  }
+}
+
+TEST(OutputTests, checkOutputWritable) {
+  const std::string dir = test::freshDirectory("checkOutputWritable");
+  const auto errorOf = [](const std::string& path) -> std::string {
+    try {
+      checkOutputWritable(path);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  // TC01: a new file in a writable directory; the check leaves nothing behind
+  EXPECT_EQ(errorOf(dir + "/new.png"), "(no error)");
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  // TC02: a file in a directory that does not exist
+  EXPECT_EQ(errorOf(dir + "/missing/new.png"), "-o: cannot write '" + dir +
+                                                   "/missing/new.png': the directory '" + dir +
+                                                   "/missing' does not exist");
+  // TC03: the path of a directory
+  std::filesystem::create_directory(dir + "/sub.png");
+  EXPECT_EQ(errorOf(dir + "/sub.png"), "-o: cannot write '" + dir + "/sub.png': it is a directory");
+  // TC04: a "directory" that is a file
+  { std::ofstream(dir + "/file") << "x"; }
+  EXPECT_EQ(errorOf(dir + "/file/new.png"),
+            "-o: cannot write '" + dir + "/file/new.png': '" + dir + "/file' is not a directory");
+  // TC11: a path that ends with a separator names no file
+  EXPECT_EQ(errorOf(dir + "/"), "-o: cannot write '" + dir + "/': it names no file");
+  // TC12: a bare file name is in the current directory (which the tests can write to)
+  EXPECT_EQ(errorOf("rt-check-output-test.png"), "(no error)");
+}
+
+TEST(OutputTests, writeFileAtomically) {
+  const std::string dir = test::freshDirectory("writeFileAtomically");
+  // TC01: a new file gets the text, and no temporary file remains
+  writeFileAtomically(dir + "/a.json", "{}\n");
+  EXPECT_EQ(test::readFile(dir + "/a.json"), "{}\n");
+  // TC02: an existing file is replaced
+  writeFileAtomically(dir + "/a.json", "{\"x\": 1}\n");
+  EXPECT_EQ(test::readFile(dir + "/a.json"), "{\"x\": 1}\n");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            1);
+  // TC11: a directory that does not exist: an error naming the path
+  EXPECT_THROW(writeFileAtomically(dir + "/missing/a.json", "{}"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace rt::cli

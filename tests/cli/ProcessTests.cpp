@@ -1,0 +1,288 @@
+// Tests that run the built `rt` executable as a user would: exit codes, files written (or not),
+// Ctrl-C, and the byte-for-byte equality of a built-in scene and its export.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "RtProcess.h"
+#include "camera/ImageWriter.h"
+#include "cli/BuiltinScenes.h"
+#include "lighting/CourseScenes.h"
+#include "reflections/CourseScenes.h"
+#include "shadows/CourseScenes.h"
+
+namespace rt::cli {
+namespace {
+
+using test::freshDirectory;
+using test::readFile;
+using test::runRt;
+
+void writeText(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// render
+
+TEST(RenderProcessTests, widthAndHeightOverrideTheScenesResolution) {
+  const std::string dir = freshDirectory("renderOverride");
+  // TC01: both overridden: the PNG has that size, and the course's two-colour picture: the
+  // sphere (pink) in the middle, the empty up-right quadrant (green background) in the corner
+  test::RtResult r = runRt(
+      {"render", "two-color", "-o", dir + "/a.png", "--width", "40", "--height", "30", "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  const Rgb8Image a = readPng(dir + "/a.png");
+  EXPECT_EQ(a.width, 40);
+  EXPECT_EQ(a.height, 30);
+  EXPECT_EQ(a.at(20, 15), (std::array<unsigned char, 3>{255, 191, 191}));
+  EXPECT_EQ(a.at(39, 0), (std::array<unsigned char, 3>{75, 127, 90}));
+  // TC02: only the width: the height stays the scene's (1000)
+  r = runRt({"render", "two-color", "-o", dir + "/b.png", "--width", "8", "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Rgb8Image b = readPng(dir + "/b.png");
+  EXPECT_EQ(b.width, 8);
+  EXPECT_EQ(b.height, findBuiltinScene("two-color")->make().camera.nY);
+  // TC11: the smallest image, 1x1
+  r = runRt(
+      {"render", "two-color", "-o", dir + "/c.png", "--width", "1", "--height", "1", "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readPng(dir + "/c.png").width, 1);
+}
+
+TEST(RenderProcessTests, defaultOutputIsSceneDotPngInTheCurrentDirectory) {
+  const std::string dir = freshDirectory("renderDefaultOutput");
+  // TC01: without -o, NAME.png appears in the working directory
+  const test::RtResult r =
+      runRt({"render", "two-color", "--width", "4", "--height", "3", "--quiet"},
+            {.cwd = dir, .asUnprivileged = false});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readPng(dir + "/two-color.png").width, 4);
+}
+
+TEST(RenderProcessTests, progressAndTimingGoToStderr) {
+  const std::string dir = freshDirectory("renderProgress");
+  const std::string out = dir + "/p.png";
+  // TC01: stderr is not a terminal: a header, one line per 10% in order, then the wall time and
+  // the rate of primary rays; stdout stays empty
+  const test::RtResult r =
+      runRt({"render", "two-color", "-o", out, "--width", "20", "--height", "10"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  std::string expected = "rt: rendering two-color (20x10, tracer ambient) to " + out + "\n";
+  for (int p = 10; p <= 100; p += 10) expected += "rt: rendering " + std::to_string(p) + "%\n";
+  ASSERT_TRUE(r.err.starts_with(expected)) << r.err;
+  const std::string last = r.err.substr(expected.size());
+  EXPECT_TRUE(std::regex_match(
+      last, std::regex("rt: wrote " + out +
+                       ": 20x10, tracer ambient, 200 primary rays in [0-9.]+ s \\([0-9]+ "
+                       "primary rays/s\\)\n")))
+      << last;
+  // TC02: --tracer names the tracer in the report
+  const test::RtResult phong = runRt(
+      {"render", "two-color", "-o", out, "--width", "2", "--height", "2", "--tracer", "phong"});
+  ASSERT_EQ(phong.exitCode, 0) << phong.err;
+  EXPECT_NE(phong.err.find("(2x2, tracer phong)"), std::string::npos) << phong.err;
+}
+
+TEST(RenderProcessTests, badSceneFileExitsWithTwo) {
+  const std::string dir = freshDirectory("renderBadFile");
+  // TC01: a scene file that does not exist: the loader's message, exit 2, nothing written
+  test::RtResult r = runRt({"render", dir + "/missing.json", "-o", dir + "/x.png"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(r.err.starts_with("rt: ")) << r.err;
+  EXPECT_NE(r.err.find("missing.json"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+  // TC02: malformed JSON: the message names the file, line and column
+  writeText(dir + "/bad.json", "{\n  \"background\": [1, 2,\n}\n");
+  r = runRt({"render", dir + "/bad.json", "-o", dir + "/x.png"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(r.err.starts_with("rt: " + dir + "/bad.json:3:")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+}
+
+TEST(RenderProcessTests, unwritableOutputFailsBeforeRendering) {
+  const std::string dir = freshDirectory("renderUnwritable");
+  // TC01: a missing directory: exit 2, the one-line reason, and no render started (no progress)
+  const std::string missing = dir + "/missing/out.png";
+  const test::RtResult r = runRt({"render", "two-color", "-o", missing});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "rt: -o: cannot write '" + missing + "': the directory '" + dir +
+                       "/missing' does not exist\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/missing"));
+}
+
+TEST(RenderProcessTests, readOnlyDirectoryKeepsTheExistingFile) {
+  namespace fs = std::filesystem;
+  // A directory that its owner can read but not write; when the tests run as root (who may
+  // write anywhere) rt runs as the unprivileged user nobody, for whom the mode holds. The
+  // directory lives in /tmp, which every user can reach.
+  char pattern[] = "/tmp/rt-cli-readonly-XXXXXX";
+  ASSERT_NE(::mkdtemp(pattern), nullptr);
+  const std::string dir = pattern;
+  const std::string out = dir + "/out.png";
+  writeText(out, "the previous image");
+  ::chmod(out.c_str(), 0644);
+  ::chmod(dir.c_str(), 0555);
+  // TC01: exit 2 before rendering (no progress line), the reason named, the file untouched
+  const test::RtResult r =
+      runRt({"render", "two-color", "-o", out}, {.cwd = "", .asUnprivileged = true});
+  ::chmod(dir.c_str(), 0755);
+  const std::string kept = readFile(out);
+  const auto entries = std::distance(fs::directory_iterator(dir), fs::directory_iterator());
+  fs::remove_all(dir);
+  if (r.exitCode == 125 || r.exitCode == 127)
+    GTEST_SKIP() << "cannot run " << RT_EXE << " as the user nobody (exit " << r.exitCode << ")";
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "rt: -o: cannot write '" + out + "': Permission denied\n");
+  EXPECT_EQ(kept, "the previous image");
+  EXPECT_EQ(entries, 1);  // no temporary file left behind
+}
+
+TEST(RenderProcessTests, ctrlCStopsTheRenderAndWritesNothing) {
+  const std::string dir = freshDirectory("renderInterrupt");
+  const std::string out = dir + "/out.png";
+  writeText(out, "the previous image");
+  // The scene with the most shapes, with the slowest tracer, large: it takes seconds, and the
+  // signal is sent as soon as the first 10% are reported.
+  const BuiltinScene* slowest = &builtinScenes().front();
+  for (const BuiltinScene& s : builtinScenes())
+    if (s.make().scene.geometries.size() > slowest->make().scene.geometries.size()) slowest = &s;
+  test::RtChild child({"render", slowest->name, "-o", out, "--tracer", "whitted", "--width", "1200",
+                       "--height", "1200"});
+  ASSERT_TRUE(child.waitForLine("rt: rendering 10%\n")) << child.err();
+  child.signal(SIGINT);
+  // TC01: exit code 130, a message, the existing file untouched, no temporary file left
+  EXPECT_EQ(child.wait(), 130) << child.err();
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      child.err(), m,
+      std::regex("rt: interrupted after ([0-9]+) of 1440000 primary rays; nothing written to " +
+                 out + "\n$")))
+      << child.err();
+  // the render stopped part way: at least the reported 10%, not all of it
+  EXPECT_GE(std::stoll(m[1]), 144000);
+  EXPECT_LT(std::stoll(m[1]), 1440000);
+  EXPECT_EQ(readFile(out), "the previous image");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// probe
+
+TEST(ProbeProcessTests, negativeCoordinatesAndTheFirstHit) {
+  const std::string dir = freshDirectory("probe");
+  // A sphere of radius 2 at (0,0,2) and a named wall z = 5; ambient (100,100,100) x 0.5.
+  writeText(dir + "/simple.json", R"({
+  "camera": {"location": [0, 0, -10], "target": [0, 0, 0], "vpDistance": 10,
+             "vpSize": [4, 4], "resolution": [5, 5]},
+  "background": [1, 2, 3],
+  "ambient": {"color": [100, 100, 100], "kA": 0.5},
+  "geometries": [
+    {"type": "sphere", "center": [0, 0, 2], "radius": 2, "emission": [300, 20, 20],
+     "name": "ball"},
+    {"type": "plane", "point": [0, 0, 5], "normal": [0, 0, 1], "name": "wall"}
+  ],
+  "render": {"tracer": "phong"}
+}
+)");
+  // TC01: --ray with negative coordinates parses; the first hit is where the line x = -1,
+  // y = 0.5 enters the sphere: z = 2 - sqrt(4 - 1.25), t = 4 - sqrt(2.75); its outward normal
+  // is (p - c) / 2 = (-0.5, 0.25, -sqrt(2.75)/2)
+  const test::RtResult r = runRt({"probe", dir + "/simple.json", "--ray", "-1,0.5,-2", "0,0,1"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["ray"]["origin"], nlohmann::json::parse("[-1, 0.5, -2]"));
+  EXPECT_EQ(j["ray"]["direction"], nlohmann::json::parse("[0, 0, 1]"));
+  ASSERT_EQ(j["hits"].size(), 3u);
+  const double s = std::sqrt(2.75);
+  const nlohmann::json& first = j["hits"][0];
+  EXPECT_NEAR(first["t"].get<double>(), 4 - s, 1e-12);
+  EXPECT_NEAR(first["point"][0].get<double>(), -1, 1e-12);
+  EXPECT_NEAR(first["point"][1].get<double>(), 0.5, 1e-12);
+  EXPECT_NEAR(first["point"][2].get<double>(), 2 - s, 1e-12);
+  EXPECT_NEAR(first["normal"][0].get<double>(), -0.5, 1e-12);
+  EXPECT_NEAR(first["normal"][1].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(first["normal"][2].get<double>(), -s / 2, 1e-12);
+  EXPECT_EQ(first["geometry"], 0);
+  EXPECT_EQ(first["name"], "ball");
+  // the sphere's far side, then the wall, sorted by t
+  EXPECT_NEAR(j["hits"][1]["t"].get<double>(), 4 + s, 1e-12);
+  EXPECT_EQ(j["hits"][2]["t"], 7);
+  EXPECT_EQ(j["hits"][2]["geometry"], 1);
+  EXPECT_EQ(j["hits"][2]["name"], "wall");
+  EXPECT_EQ(j["hits"][2]["normal"], nlohmann::json::parse("[0, 0, 1]"));
+  // the Phong tracer's colour: emission + Ia·kA, unclamped
+  EXPECT_EQ(j["color"], nlohmann::json::parse("[350, 70, 70]"));
+
+  // TC02: --tracer ambient changes the colour to the ambient light alone
+  const test::RtResult ambient =
+      runRt({"probe", dir + "/simple.json", "--ray", "-1,0.5,-2", "0,0,1", "--tracer", "ambient"});
+  ASSERT_EQ(ambient.exitCode, 0) << ambient.err;
+  EXPECT_EQ(nlohmann::json::parse(ambient.out)["color"], nlohmann::json::parse("[50, 50, 50]"));
+
+  // TC03: --pixel: the camera's ray through the centre pixel of the 5x5 image goes from the
+  // camera's location straight at the target
+  const test::RtResult pixel = runRt({"probe", dir + "/simple.json", "--pixel", "2,2"});
+  ASSERT_EQ(pixel.exitCode, 0) << pixel.err;
+  const nlohmann::json p = nlohmann::json::parse(pixel.out);
+  EXPECT_EQ(p["ray"]["origin"], nlohmann::json::parse("[0, 0, -10]"));
+  EXPECT_EQ(p["ray"]["direction"], nlohmann::json::parse("[0, 0, 1]"));
+  EXPECT_EQ(p["hits"][0]["t"], 10);
+
+  // TC11: --pixel beyond the scene's resolution is refused; with --width it is inside
+  EXPECT_EQ(runRt({"probe", dir + "/simple.json", "--pixel", "5,0"}).exitCode, 2);
+  EXPECT_EQ(runRt({"probe", dir + "/simple.json", "--pixel", "5,0", "--width", "6"}).exitCode, 0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// export
+
+TEST(ExportProcessTests, renderingTheExportGivesTheSameBytes) {
+  const std::string dir = freshDirectory("exportRender");
+  // One scene of each stage (small images: the equality is per pixel, the size does not matter).
+  std::vector<std::string> names{"two-color"};
+  for (auto table : {lightingScenes(), shadowScenes(), reflectionScenes()})
+    if (!table.empty()) names.push_back(table.front().name);
+  names.push_back(reflectionScenes().back().name);
+  for (const std::string& name : names) {
+    SCOPED_TRACE(name);
+    const std::string json = dir + "/" + name + ".json";
+    // TC01: export to a file, and to stdout: the same text
+    test::RtResult r = runRt({"export", name, "-o", json});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    r = runRt({"export", name});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, readFile(json));
+    // TC02: the built-in scene and its export render to identical PNG files
+    const std::vector<std::string> size{"--width", "48", "--height", "36", "--quiet"};
+    std::vector<std::string> a{"render", name, "-o", dir + "/" + name + "-builtin.png"};
+    std::vector<std::string> b{"render", json, "-o", dir + "/" + name + "-export.png"};
+    a.insert(a.end(), size.begin(), size.end());
+    b.insert(b.end(), size.begin(), size.end());
+    ASSERT_EQ(runRt(a).exitCode, 0);
+    r = runRt(b);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string builtinPng = readFile(dir + "/" + name + "-builtin.png");
+    EXPECT_FALSE(builtinPng.empty());
+    EXPECT_EQ(builtinPng, readFile(dir + "/" + name + "-export.png"));
+  }
+}
+
+}  // namespace
+}  // namespace rt::cli

@@ -1,0 +1,54 @@
+#pragma once
+// Runs the built `rt` program (RT_EXE) as a child process, as a user would, and captures its exit
+// status and both streams. No shell is involved, so arguments need no quoting.
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace rt::cli::test {
+
+struct RtResult {
+  int exitCode = -1;  ///< the exit code, or -1 when the process was killed by a signal
+  std::string out;
+  std::string err;
+};
+
+struct RtOptions {
+  std::string cwd;              ///< working directory; empty: the test's
+  bool asUnprivileged = false;  ///< when running as root, drop to nobody (65534) first
+};
+
+/// Runs RT_EXE with args and waits for it.
+RtResult runRt(const std::vector<std::string>& args, const RtOptions& options = {});
+
+/// A running `rt` whose stderr the test reads line by line (to interrupt it at a known point).
+class RtChild {
+ public:
+  explicit RtChild(const std::vector<std::string>& args);
+  ~RtChild();
+  RtChild(const RtChild&) = delete;
+  RtChild& operator=(const RtChild&) = delete;
+
+  /// Reads stderr until a line contains text; returns false at end of stream.
+  bool waitForLine(const std::string& text);
+  void signal(int sig);
+  /// Waits for the process, drains stderr, returns the exit code (-1 if killed by a signal).
+  int wait();
+  const std::string& err() const { return err_; }
+
+ private:
+  pid_t pid_ = -1;
+  int errFd_ = -1;
+  std::string err_;
+  std::size_t scanned_ = 0;
+};
+
+/// The file's bytes, or "" when it does not exist.
+std::string readFile(const std::string& path);
+
+/// A fresh, empty directory for one test, under the build tree's cli-test-output/.
+std::string freshDirectory(const std::string& name);
+
+}  // namespace rt::cli::test
