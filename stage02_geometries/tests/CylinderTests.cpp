@@ -19,8 +19,7 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 using test::expectVector;
-
-const Ray kZAxis(Point(0, 0, 0), Vector(0, 0, 1));
+using test::kZAxis;
 
 TEST(CylinderTests, constructor) {
   // ============ Equivalence Partitions Tests ==============

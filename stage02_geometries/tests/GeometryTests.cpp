@@ -11,8 +11,7 @@ namespace rt {
 namespace {
 
 using test::expectVector;
-
-const Ray kZAxis(Point(0, 0, 0), Vector(0, 0, 1));
+using test::kZAxis;
 
 TEST(GeometryTests, normalAtDispatchesToEveryShape) {
   // TC01: sphere

@@ -18,8 +18,7 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 using test::expectVector;
-
-const Ray kZAxis(Point(0, 0, 0), Vector(0, 0, 1));
+using test::kZAxis;
 
 TEST(TubeTests, constructor) {
   // ============ Equivalence Partitions Tests ==============

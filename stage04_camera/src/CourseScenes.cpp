@@ -2,6 +2,10 @@
 
 namespace rt {
 
+CameraSpec renderTestsCamera() {
+  return CameraSpec::squareView(Point::ZERO, Vector(0, 0, -1), 500, 100, 1000);
+}
+
 SceneSetup<Scene> twoColorScene() {
   SceneSetup<Scene> setup;
   Scene& scene = setup.scene;
@@ -17,15 +21,7 @@ SceneSetup<Scene> twoColorScene() {
       // down-right
       Triangle(Point(100, 0, -100), Point(0, -100, -100), Point(100, -100, -100)));
 
-  CameraSpec& camera = setup.camera;
-  camera.location = Point::ZERO;
-  camera.to = Vector(0, 0, -1);
-  camera.up = Vector::AXIS_Y;
-  camera.vpDistance = 100;
-  camera.vpWidth = 500;
-  camera.vpHeight = 500;
-  camera.nX = 1000;
-  camera.nY = 1000;
+  setup.camera = renderTestsCamera();
   return setup;
 }
 

@@ -261,5 +261,35 @@ TEST(CameraSpecTests, SpecWithoutDirectionIsMissingIt) {
   expectThrowWith<std::invalid_argument>([] { (void)CameraSpec{}.builder(); }, {"width"});
 }
 
+/// The fields both forms of CameraSpec::squareView set alike: location, up +Y, the square view
+/// plane and the square image.
+void expectSquareView(const CameraSpec& spec, const Point& location, double vpSize,
+                      double vpDistance, int pixels) {
+  EXPECT_EQ(spec.location, location);
+  EXPECT_EQ(spec.up, Vector::AXIS_Y);
+  EXPECT_EQ(spec.vpWidth, vpSize);
+  EXPECT_EQ(spec.vpHeight, vpSize);
+  EXPECT_EQ(spec.vpDistance, vpDistance);
+  EXPECT_EQ(spec.nX, pixels);
+  EXPECT_EQ(spec.nY, pixels);
+}
+
+TEST(CameraSpecTests, SquareView) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: looking along `to`: `to` set, no target
+  const CameraSpec along = CameraSpec::squareView(Point(1, 2, 3), Vector(0, 0, -2), 4, 7, 40);
+  expectSquareView(along, Point(1, 2, 3), 4, 7, 40);
+  ASSERT_TRUE(along.to.has_value());
+  EXPECT_EQ(*along.to, Vector(0, 0, -2));
+  EXPECT_FALSE(along.target.has_value());
+  // TC02: looking at a target: the target set, no `to`; the camera looks at it
+  const CameraSpec at = CameraSpec::squareView(Point(0, 0, 10), Point(0, 0, 0), 2, 5, 3);
+  expectSquareView(at, Point(0, 0, 10), 2, 5, 3);
+  ASSERT_TRUE(at.target.has_value());
+  EXPECT_EQ(*at.target, Point(0, 0, 0));
+  EXPECT_FALSE(at.to.has_value());
+  EXPECT_EQ(at.builder().build().vTo(), Vector(0, 0, -1));
+}
+
 }  // namespace
 }  // namespace rt

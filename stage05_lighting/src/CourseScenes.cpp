@@ -1,7 +1,12 @@
 #include "lighting/CourseScenes.h"
 
 #include <array>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
+#include "camera/CourseScenes.h"
 #include "geometries/Sphere.h"
 #include "geometries/Triangle.h"
 #include "lighting/LightSource.h"
@@ -11,21 +16,6 @@ namespace rt {
 namespace course {
 
 namespace {
-
-// ---- RenderTests -------------------------------------------------------------------------
-
-CameraSpec renderTestsCamera() {
-  CameraSpec c;
-  c.location = Point::ZERO;
-  c.to = Vector(0, 0, -1);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = 500;
-  c.vpHeight = 500;
-  c.vpDistance = 100;
-  c.nX = 1000;
-  c.nY = 1000;
-  return c;
-}
 
 // ---- LightsTests: the shared values of the course's test class ------------------------------
 
@@ -64,18 +54,9 @@ Material trianglesMaterial() {
   return m;
 }
 
-/// camera1 / camera2: at (0,0,1000) looking at the origin, up +Y, distance 1000.
+/// camera1 / camera2: at (0,0,1000) looking along -Z (at the origin), up +Y, distance 1000.
 CameraSpec lightsCamera(double vpSize, int pixels) {
-  CameraSpec c;
-  c.location = Point(0, 0, 1000);
-  c.to = Vector(0, 0, -1);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = vpSize;
-  c.vpHeight = vpSize;
-  c.vpDistance = 1000;
-  c.nX = pixels;
-  c.nY = pixels;
-  return c;
+  return CameraSpec::squareView(Point(0, 0, 1000), Vector(0, 0, -1), vpSize, 1000, pixels);
 }
 
 /// scene1 with the sphere, seen by camera1.
@@ -88,13 +69,15 @@ SceneSetup<LitScene> sphereScene(const char* name, LightSource light) {
   return s;
 }
 
-/// scene2 (ambient WHITE x 0.15) with the two triangles, seen by camera2.
-SceneSetup<LitScene> trianglesScene(const char* name, double ambientKa) {
+/// scene2 (ambient WHITE x ambientKa, 0.15 in LightsTests) with the two triangles and the
+/// light, seen by camera2.
+SceneSetup<LitScene> trianglesScene(const char* name, double ambientKa, LightSource light) {
   SceneSetup<LitScene> s;
   s.scene.name = name;
   s.scene.ambientLight = AmbientLight(Color::WHITE, ambientKa);
   s.scene.add(Triangle(vertices[0], vertices[1], vertices[2]), Color::BLACK, trianglesMaterial());
   s.scene.add(Triangle(vertices[0], vertices[1], vertices[3]), Color::BLACK, trianglesMaterial());
+  s.scene.addLight(std::move(light));
   s.camera = lightsCamera(200, 500);
   return s;
 }
@@ -102,17 +85,16 @@ SceneSetup<LitScene> trianglesScene(const char* name, double ambientKa) {
 }  // namespace
 
 SceneSetup<LitScene> renderMultiColor() {
-  SceneSetup<LitScene> s;
+  // Stage 4's two-colour scene (its shapes and camera), with other lights and emissions.
+  SceneSetup<Scene> base = twoColorScene();
+  SceneSetup<LitScene> s{LitScene(base.scene), base.camera};
   s.scene.name = "color render test";
+  s.scene.background = Color::BLACK;
   s.scene.ambientLight = AmbientLight(Color::WHITE, Double3(0.2, 0.2, 0.2));
-  s.scene.add(Sphere(Point(0, 0, -100), 50));
-  s.scene.add(Triangle(Point(-100, 0, -100), Point(0, 100, -100), Point(-100, 100, -100)),
-              Color::GREEN);  // up left
-  s.scene.add(Triangle(Point(-100, 0, -100), Point(0, -100, -100), Point(-100, -100, -100)),
-              Color::RED);  // down left
-  s.scene.add(Triangle(Point(100, 0, -100), Point(0, -100, -100), Point(100, -100, -100)),
-              Color::BLUE);  // down right
-  s.camera = renderTestsCamera();
+  // Geometry 0 is the sphere, which keeps the default appearance.
+  s.scene.appearances[1].emission = Color::GREEN;  // up left
+  s.scene.appearances[2].emission = Color::RED;    // down left
+  s.scene.appearances[3].emission = Color::BLUE;   // down right
   return s;
 }
 
@@ -143,35 +125,31 @@ SceneSetup<LitScene> sphereSpotSharp() {
 }
 
 SceneSetup<LitScene> trianglesDirectional() {
-  SceneSetup<LitScene> s = trianglesScene("lightTrianglesDirectional", 0.15);
-  s.scene.addLight(DirectionalLight(trianglesLightColor(), trianglesLightDirection()));
-  return s;
+  return trianglesScene("lightTrianglesDirectional", 0.15,
+                        DirectionalLight(trianglesLightColor(), trianglesLightDirection()));
 }
 
 SceneSetup<LitScene> trianglesPoint() {
-  SceneSetup<LitScene> s = trianglesScene("lightTrianglesPoint", 0.15);
-  s.scene.addLight(
+  return trianglesScene(
+      "lightTrianglesPoint", 0.15,
       PointLight(trianglesLightColor(), trianglesLightPosition).setKl(0.001).setKq(0.0002));
-  return s;
 }
 
 SceneSetup<LitScene> trianglesSpot() {
-  SceneSetup<LitScene> s = trianglesScene("lightTrianglesSpot", 0.15);
-  s.scene.addLight(
+  return trianglesScene(
+      "lightTrianglesSpot", 0.15,
       SpotLight(trianglesLightColor(), trianglesLightPosition, trianglesLightDirection())
           .setKl(0.001)
           .setKq(0.0001));
-  return s;
 }
 
 SceneSetup<LitScene> trianglesSpotSharp() {
-  SceneSetup<LitScene> s = trianglesScene("lightTrianglesSpotSharp", 0.15);
-  s.scene.addLight(
+  return trianglesScene(
+      "lightTrianglesSpotSharp", 0.15,
       SpotLight(trianglesLightColor(), trianglesLightPosition, trianglesLightDirection())
           .setKl(0.001)
           .setKq(0.00004)
           .setNarrowBeam(10));
-  return s;
 }
 
 SceneSetup<LitScene> sphereMultiLight() {
@@ -188,8 +166,8 @@ SceneSetup<LitScene> sphereMultiLight() {
 }
 
 SceneSetup<LitScene> trianglesMultiLight() {
-  SceneSetup<LitScene> s = trianglesScene("MultipleTestTriangle", 0.05);
-  s.scene.addLight(DirectionalLight(Color(200, 10, 40), Vector(-3, 3, -3)));
+  SceneSetup<LitScene> s = trianglesScene("MultipleTestTriangle", 0.05,
+                                          DirectionalLight(Color(200, 10, 40), Vector(-3, 3, -3)));
   s.scene.addLight(PointLight(Color(150, 350, 510), Point(70, 50, -50)).setKl(0.001).setKq(0.0001));
   s.scene.addLight(SpotLight(Color(0, 0, 800), Point(50, -200, 50), Vector(0, 1.2, -1))
                        .setKl(0.001)
@@ -227,6 +205,50 @@ std::span<const CourseScene> lightingScenes() {
        &course::trianglesMultiLight},
   };
   return table;
+}
+
+namespace {
+
+[[noreturn]] void throwBadEntry(std::size_t index, const char* name, const std::string& what) {
+  throw std::logic_error("checkSceneTable: entry " + std::to_string(index) + " ('" +
+                         (name ? name : "(null)") + "'): " + what);
+}
+
+}  // namespace
+
+void checkSceneTable(std::span<const CourseScene> table) {
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const CourseScene& entry = table[i];
+    const std::string name = entry.name ? entry.name : "";
+    if (name.empty()) throwBadEntry(i, entry.name, "no name");
+    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-") != std::string::npos)
+      throwBadEntry(i, entry.name, "the name is not kebab-case (a-z, 0-9, '-')");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (table[j].name && name == table[j].name)
+        throwBadEntry(i, entry.name, "duplicate name, as entry " + std::to_string(j));
+    }
+    if (!entry.description || std::strlen(entry.description) <= 10)
+      throwBadEntry(i, entry.name,
+                    "description '" + std::string(entry.description ? entry.description : "") +
+                        "' has 10 characters or fewer");
+    if (!entry.make) throwBadEntry(i, entry.name, "no make function");
+    SceneSetup<LitScene> setup;
+    try {
+      setup = entry.make();
+    } catch (const std::exception& e) {
+      throwBadEntry(i, entry.name, std::string("its make function throws: ") + e.what());
+    }
+    if (setup.scene.name.empty()) throwBadEntry(i, entry.name, "its scene has no name");
+    if (setup.scene.appearances.size() != setup.scene.geometries.size())
+      throwBadEntry(i, entry.name,
+                    std::to_string(setup.scene.geometries.size()) + " geometries but " +
+                        std::to_string(setup.scene.appearances.size()) + " appearances");
+    try {
+      (void)setup.camera.builder().build();
+    } catch (const std::exception& e) {
+      throwBadEntry(i, entry.name, std::string("its camera does not build: ") + e.what());
+    }
+  }
 }
 
 }  // namespace rt

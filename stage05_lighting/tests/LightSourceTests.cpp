@@ -17,21 +17,12 @@ namespace {
 
 using test::colorNear;
 using test::EPS;
+using test::invalidArgumentMessage;
 using test::tripleNear;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 constexpr double INF = std::numeric_limits<double>::infinity();
-
-template <typename F>
-std::string invalidArgumentMessage(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(DirectionalLightTests, illuminate) {
   const LightSource light = DirectionalLight(Color(100, 200, 300), Vector(0, 0, -2));

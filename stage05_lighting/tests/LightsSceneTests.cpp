@@ -24,16 +24,21 @@
 //  d = sqrt(3500), n·l = 50/sqrt(3500), r = (-30,-10,50)/sqrt(3500), -v·r = 50/sqrt(3500);
 //  spot factor direction·l = (30+10+50)/(sqrt(3)·sqrt(3500)) = 90/sqrt(10500).
 //  Colour: ambient (38.25,38.25,38.25) + I_L·(kD3·|n·l| + kS3·(-v·r)^301).
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <set>
+#include <span>
+#include <stdexcept>
 #include <string>
 
 #include "ReferencePhong.h"
 #include "TestSupport.h"
 #include "camera/ImageWriter.h"
+#include "geometries/Sphere.h"
 #include "lighting/CourseScenes.h"
 
 namespace rt {
@@ -43,6 +48,8 @@ using test::colorNear;
 using test::EPS;
 using test::referencePhong;
 using test::ReferenceShading;
+using ::testing::AllOf;
+using ::testing::HasSubstr;
 
 constexpr int N = 101;  // pixels per side in these tests; the centre pixel is (50,50)
 const Double3 KD3(0.2, 0.6, 0.4), KS3(0.2, 0.4, 0.3);
@@ -418,19 +425,10 @@ TEST(CourseScenesTests, lightingScenes) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: eleven scenes, with unique kebab-case names and a description each
   ASSERT_EQ(scenes.size(), 11u);
-  std::set<std::string> names;
-  for (const CourseScene& s : scenes) {
-    const std::string name = s.name;
-    EXPECT_TRUE(names.insert(name).second) << name;
-    EXPECT_EQ(name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-"), std::string::npos)
-        << name;
-    EXPECT_FALSE(std::string(s.description).empty()) << name;
-    // TC02: every scene builds, keeps shapes and appearances aligned and has a camera
-    const SceneSetup<LitScene> setup = s.make();
-    EXPECT_EQ(setup.scene.appearances.size(), setup.scene.geometries.size()) << name;
-    EXPECT_NO_THROW(PhongTracer{setup.scene}) << name;
-    EXPECT_NO_THROW(setup.camera.builder().build()) << name;
-  }
+  // TC02: every scene builds, keeps shapes and appearances aligned and has a camera
+  // (checkSceneTable, tested below), and the Phong tracer accepts it
+  EXPECT_NO_THROW(checkSceneTable(scenes));
+  for (const CourseScene& s : scenes) EXPECT_NO_THROW(PhongTracer{s.make().scene}) << s.name;
   // TC03: the LightsTests cameras: camera1 (VP 150) for the sphere, camera2 (VP 200) for the
   // triangles, both at (0,0,1000), distance 1000, 500 x 500
   const auto sphere = course::sphereSpot();
@@ -452,6 +450,80 @@ TEST(CourseScenesTests, lightingScenes) {
   EXPECT_EQ(scenes[0].gridInterval, 100);
   EXPECT_EQ(scenes[0].gridColor, Color::WHITE);
   EXPECT_EQ(scenes[1].gridInterval, 0);
+}
+
+// ---- checkSceneTable ------------------------------------------------------------------------
+
+SceneSetup<LitScene> unnamedScene() {
+  SceneSetup<LitScene> s = course::sphereDirectional();
+  s.scene.name.clear();
+  return s;
+}
+
+SceneSetup<LitScene> misalignedScene() {
+  SceneSetup<LitScene> s = course::sphereDirectional();
+  s.scene.geometries.add(Sphere(Point(0, 0, -500), 1));  // behind LitScene::add's back
+  return s;
+}
+
+SceneSetup<LitScene> noCameraScene() {
+  SceneSetup<LitScene> s = course::sphereDirectional();
+  s.camera = CameraSpec{};
+  return s;
+}
+
+SceneSetup<LitScene> throwingScene() { throw std::invalid_argument("bad value"); }
+
+/// The message of the logic_error checkSceneTable throws for the table ("" for none).
+std::string tableError(std::initializer_list<CourseScene> table) {
+  return test::thrownMessage<std::logic_error>(
+      [&] { checkSceneTable(std::span<const CourseScene>(table.begin(), table.size())); });
+}
+
+TEST(CourseScenesTests, checkSceneTable) {
+  const CourseScene good{"good-scene", "a valid entry for the check", &course::sphereDirectional};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a valid table: no error
+  EXPECT_EQ(tableError({good, {"good-2", "another valid entry", &course::spherePoint}}), "");
+  // TC02: a duplicate name: names the second entry, its name and the first one
+  EXPECT_THAT(tableError({good, {"other", "a valid description", &course::spherePoint}, good}),
+              AllOf(HasSubstr("entry 2"), HasSubstr("'good-scene'"), HasSubstr("duplicate"),
+                    HasSubstr("entry 0")));
+  // TC03: a name that is not kebab-case
+  EXPECT_THAT(tableError({{"Good_Scene", "a valid description", &course::sphereDirectional}}),
+              AllOf(HasSubstr("entry 0"), HasSubstr("'Good_Scene'"), HasSubstr("kebab-case")));
+  // TC04: a short description
+  EXPECT_THAT(tableError({good, {"short", "too short", &course::sphereDirectional}}),
+              AllOf(HasSubstr("entry 1"), HasSubstr("'short'"), HasSubstr("'too short'")));
+  // TC05: a scene without a name
+  EXPECT_THAT(tableError({{"unnamed", "a scene without a name", &unnamedScene}}),
+              AllOf(HasSubstr("'unnamed'"), HasSubstr("no name")));
+  // TC06: more geometries than appearances: both sizes
+  EXPECT_THAT(tableError({{"misaligned", "one shape without appearance", &misalignedScene}}),
+              AllOf(HasSubstr("'misaligned'"), HasSubstr("2 geometries but 1 appearances")));
+  // TC07: a camera that does not build: the builder's own message too
+  EXPECT_THAT(tableError({{"no-camera", "a default camera spec", &noCameraScene}}),
+              AllOf(HasSubstr("'no-camera'"), HasSubstr("camera"), HasSubstr("width")));
+  // TC08: a make function that throws: its message
+  EXPECT_THAT(tableError({{"throwing", "make throws an exception", &throwingScene}}),
+              AllOf(HasSubstr("'throwing'"), HasSubstr("bad value")));
+
+  // =============== Boundary Values Tests ==================
+  // TC11: an empty table: nothing to check
+  EXPECT_EQ(tableError({}), "");
+  // TC12: an empty name and a null name
+  EXPECT_THAT(tableError({{"", "a valid description", &course::sphereDirectional}}),
+              AllOf(HasSubstr("entry 0"), HasSubstr("no name")));
+  EXPECT_THAT(tableError({good, {nullptr, "a valid description", &course::sphereDirectional}}),
+              AllOf(HasSubstr("entry 1"), HasSubstr("(null)"), HasSubstr("no name")));
+  // TC13: descriptions of 10 characters (too short), 11 (enough) and null
+  EXPECT_THAT(tableError({{"ten", "0123456789", &course::sphereDirectional}}), HasSubstr("'ten'"));
+  EXPECT_EQ(tableError({{"eleven", "0123456789a", &course::sphereDirectional}}), "");
+  EXPECT_THAT(tableError({{"null-description", nullptr, &course::sphereDirectional}}),
+              HasSubstr("'null-description'"));
+  // TC14: no make function
+  EXPECT_THAT(tableError({{"no-make", "an entry without make", nullptr}}),
+              AllOf(HasSubstr("'no-make'"), HasSubstr("no make function")));
 }
 
 }  // namespace

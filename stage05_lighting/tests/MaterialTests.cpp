@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "TestSupport.h"
 #include "geometries/Sphere.h"
 #include "lighting/LitScene.h"
 #include "lighting/Material.h"
@@ -14,19 +15,9 @@
 namespace rt {
 namespace {
 
+using test::invalidArgumentMessage;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
-
-/// The message of the std::invalid_argument that f throws ("" when it throws nothing).
-template <typename F>
-std::string invalidArgumentMessage(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(MaterialTests, defaults) {
   // TC01: a default material is all zero, shininess 0 and ior 1 (the course's defaults)

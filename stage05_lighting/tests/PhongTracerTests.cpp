@@ -27,6 +27,8 @@ namespace {
 
 using test::colorNear;
 using test::EPS;
+using test::invalidArgumentMessage;
+using test::thrownMessage;
 using test::tripleNear;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
@@ -80,14 +82,7 @@ PointLight frontLight() {
 
 /// One pixel looking along -Z from the origin: its ray is EYE_RAY.
 CameraSpec onePixelCamera() {
-  CameraSpec c;
-  c.location = Point::ZERO;
-  c.to = Vector(0, 0, -1);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = c.vpHeight = 1;
-  c.vpDistance = 1;
-  c.nX = c.nY = 1;
-  return c;
+  return CameraSpec::squareView(Point::ZERO, Vector(0, 0, -1), 1, 1, 1);
 }
 
 TEST(PhongTracerTests, diffuse) {
@@ -328,32 +323,20 @@ TEST(PhongTracerTests, constructorChecks) {
   LitScene mismatched;
   mismatched.add(Sphere(Point(0, 0, -5), 1));
   mismatched.geometries.add(Sphere(Point(0, 0, -9), 1));
-  try {
-    PhongTracer tracer(mismatched);
-    ADD_FAILURE() << "expected std::logic_error";
-  } catch (const std::logic_error& e) {
-    EXPECT_THAT(e.what(), AllOf(HasSubstr("appearances has 1"), HasSubstr("geometries has 2")));
-  }
+  EXPECT_THAT(thrownMessage<std::logic_error>([&] { PhongTracer tracer(mismatched); }),
+              AllOf(HasSubstr("appearances has 1"), HasSubstr("geometries has 2")));
   // TC03: an invalid light pushed straight into the list is caught here, naming its index
   LitScene badLight = planeScene(diffuse());
   badLight.lights.push_back(PointLight(Color::WHITE, Point::ZERO).setKc(0));
-  try {
-    PhongTracer tracer(badLight);
-    ADD_FAILURE() << "expected std::invalid_argument";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_THAT(e.what(), AllOf(HasSubstr("lights[0]"), HasSubstr("kC")));
-  }
+  EXPECT_THAT(invalidArgumentMessage([&] { PhongTracer tracer(badLight); }),
+              AllOf(HasSubstr("lights[0]"), HasSubstr("kC")));
   // TC04: an invalid material pushed straight into the list, naming its index and field
   LitScene badMaterial = planeScene(diffuse());
   badMaterial.geometries.add(Sphere(Point(0, 0, -5), 1));
   badMaterial.appearances.push_back({});
   badMaterial.appearances.back().material.kS = Double3(-1);
-  try {
-    PhongTracer tracer(badMaterial);
-    ADD_FAILURE() << "expected std::invalid_argument";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_THAT(e.what(), AllOf(HasSubstr("appearances[1]"), HasSubstr("kS")));
-  }
+  EXPECT_THAT(invalidArgumentMessage([&] { PhongTracer tracer(badMaterial); }),
+              AllOf(HasSubstr("appearances[1]"), HasSubstr("kS")));
 
   // =============== Boundary Values Tests ==================
   // TC11: an empty scene is accepted (0 == 0)

@@ -1,10 +1,13 @@
 #pragma once
-// Helpers shared by stage 5's tests: colour comparison to a tolerance, and rendering a scene.
+// Helpers shared by stage 5's tests: colour comparison to a tolerance, the message of an
+// expected exception, and rendering a scene.
 
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "camera/Camera.h"
 #include "camera/CameraSpec.h"
@@ -40,6 +43,24 @@ inline ::testing::AssertionResult tripleNear(const Double3& actual, const Double
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "got " << actual.str() << ", expected " << expected.str()
                                        << " (tolerance " << eps << ")";
+}
+
+/// The message of the exception of type E that f throws ("" when it throws nothing; any other
+/// exception propagates and fails the test).
+template <typename E, typename F>
+std::string thrownMessage(F&& f) {
+  try {
+    std::forward<F>(f)();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The message of the std::invalid_argument that f throws ("" when it throws nothing).
+template <typename F>
+std::string invalidArgumentMessage(F&& f) {
+  return thrownMessage<std::invalid_argument>(std::forward<F>(f));
 }
 
 /// A camera for spec (its resolution replaced by nX x nY when given), rendering with tracer.

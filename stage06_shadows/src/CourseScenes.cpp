@@ -14,16 +14,7 @@ namespace {
 /// The ShadowTests camera: at (0,0,1000) looking at the origin, up +Y, view plane 200x200 at
 /// distance 1000.
 CameraSpec shadowCamera(int pixels) {
-  CameraSpec c;
-  c.location = Point(0, 0, 1000);
-  c.to = Vector(0, 0, -1);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = 200;
-  c.vpHeight = 200;
-  c.vpDistance = 1000;
-  c.nX = pixels;
-  c.nY = pixels;
-  return c;
+  return CameraSpec::squareView(Point(0, 0, 1000), Vector(0, 0, -1), 200, 1000, pixels);
 }
 
 /// kD 0.5, kS 0.5, nSh 30: the sphere's and the triangle's material in sphereTriangle*.

@@ -26,33 +26,10 @@ Material material(double kD, double kS, int shininess, double kT = 0, double kR 
   return m;
 }
 
-/// The ReflectionRefractionTests camera: at `location` looking along -Z (at the origin), up +Y.
-CameraSpec lookingDownZ(double z, double vpSize, double distance, int pixels) {
-  CameraSpec c;
-  c.location = Point(0, 0, z);
-  c.to = Vector(0, 0, -1);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = vpSize;
-  c.vpHeight = vpSize;
-  c.vpDistance = distance;
-  c.nX = pixels;
-  c.nY = pixels;
-  return c;
-}
-
 /// The allFeatures camera: at `location` looking at (0,60,0), up +Y, view plane 200x200,
 /// 1200x1200 pixels.
 CameraSpec allFeaturesCamera(const Point& location, double distance) {
-  CameraSpec c;
-  c.location = location;
-  c.target = Point(0, 60, 0);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = 200;
-  c.vpHeight = 200;
-  c.vpDistance = distance;
-  c.nX = 1200;
-  c.nY = 1200;
-  return c;
+  return CameraSpec::squareView(location, Point(0, 60, 0), 200, distance, 1200);
 }
 
 /// The allFeaturesTest scene (catalogue §6); the camera is set by the caller.
@@ -119,7 +96,7 @@ SceneSetup<LitScene> twoSpheres() {
   s.scene.addLight(SpotLight(Color(1000, 600, 0), Point(-100, -100, 500), Vector(-1, -1, -2))
                        .setKl(0.0004)
                        .setKq(0.0000006));
-  s.camera = lookingDownZ(1000, 150, 1000, 500);
+  s.camera = CameraSpec::squareView(Point(0, 0, 1000), Vector(0, 0, -1), 150, 1000, 500);
   return s;
 }
 
@@ -141,7 +118,7 @@ SceneSetup<LitScene> twoSpheresOnMirrors() {
   s.scene.addLight(SpotLight(Color(1020, 400, 400), Point(-750, -750, -150), Vector(-1, -1, -4))
                        .setKl(0.00001)
                        .setKq(0.000005));
-  s.camera = lookingDownZ(10000, 2500, 10000, 500);
+  s.camera = CameraSpec::squareView(Point(0, 0, 10000), Vector(0, 0, -1), 2500, 10000, 500);
   return s;
 }
 
@@ -156,7 +133,7 @@ SceneSetup<LitScene> trianglesTransparentSphere() {
   s.scene.add(Sphere(Point(60, 50, -50), 30), Color::BLUE, material(0.2, 0.2, 30, 0.6));
   s.scene.addLight(
       SpotLight(Color(700, 400, 400), Point(60, 50, 0), Vector(0, 0, -1)).setKl(4e-5).setKq(2e-7));
-  s.camera = lookingDownZ(1000, 200, 1000, 600);
+  s.camera = CameraSpec::squareView(Point(0, 0, 1000), Vector(0, 0, -1), 200, 1000, 600);
   return s;
 }
 
@@ -183,16 +160,7 @@ SceneSetup<LitScene> hallOfMirrors() {
   s.scene.add(Sphere(Point(-40, -20, -60), 30), Color(120, 10, 10), material(0.5, 0.5, 60));
   s.scene.add(Sphere(Point(50, -30, 40), 20), Color(10, 100, 20), material(0.5, 0.5, 60));
   s.scene.addLight(PointLight(Color(400, 400, 350), Point(0, 150, 0)).setKl(0.001).setKq(0.00005));
-  CameraSpec c;
-  c.location = Point(60, 40, 120);
-  c.target = Point(-20, -10, -150);
-  c.up = Vector::AXIS_Y;
-  c.vpWidth = 200;
-  c.vpHeight = 200;
-  c.vpDistance = 150;
-  c.nX = 600;
-  c.nY = 600;
-  s.camera = c;
+  s.camera = CameraSpec::squareView(Point(60, 40, 120), Point(-20, -10, -150), 200, 150, 600);
   return s;
 }
 

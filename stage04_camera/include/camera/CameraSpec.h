@@ -23,6 +23,14 @@ struct CameraSpec {
 
   /// A builder with location, direction, view plane and resolution set from this spec.
   Camera::Builder builder() const;
+
+  /// The shape of every built-in camera: at `location` looking along `to` (or, in the second
+  /// form, at `target`), up +Y, a vpSize x vpSize view plane at vpDistance and an image of
+  /// pixels x pixels. Values are checked by builder(), as for any spec.
+  static CameraSpec squareView(const Point& location, const Vector& to, double vpSize,
+                               double vpDistance, int pixels);
+  static CameraSpec squareView(const Point& location, const Point& target, double vpSize,
+                               double vpDistance, int pixels);
 };
 
 /// A ready-to-render scene and the camera that frames it: what a built-in scene of `rt` is, and
