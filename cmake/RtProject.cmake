@@ -4,6 +4,7 @@ include_guard(GLOBAL)
 # One INTERFACE target carries the language standard and the warnings for the whole project.
 add_library(rt_options INTERFACE)
 target_compile_features(rt_options INTERFACE cxx_std_20)
+set(CMAKE_CXX_EXTENSIONS OFF)  # -std=c++20, not gnu++20
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_compile_options(rt_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                               -Wno-sign-conversion)

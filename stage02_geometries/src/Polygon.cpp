@@ -3,8 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "primitives/Util.h"
 
@@ -16,9 +16,7 @@ std::string vertexName(std::size_t i, const std::vector<Point>& v) {
   return "vertices[" + std::to_string(i) + "] " + v[i].xyz().str();
 }
 
-[[noreturn]] void reject(const std::string& why) {
-  throw std::invalid_argument("Polygon: " + why);
-}
+[[noreturn]] void reject(const std::string& why) { throw std::invalid_argument("Polygon: " + why); }
 
 /// Checks the count and that no two consecutive vertices coincide (the last and the first
 /// included), then returns the plane of the first three vertices.
@@ -33,8 +31,7 @@ Plane planeOf(const std::vector<Point>& v) {
     }
   }
   const Double3 normal = (v[1].xyz() - v[0].xyz()).cross(v[2].xyz() - v[0].xyz());
-  if (normal.isZero())
-    reject(vertexName(1, v) + " lies on the line through its neighbours");
+  if (normal.isZero()) reject(vertexName(1, v) + " lies on the line through its neighbours");
   return Plane(v[0], Vector(normal));
 }
 

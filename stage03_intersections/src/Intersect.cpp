@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <span>
+#include <utility>
 
 #include "primitives/Util.h"
 
@@ -37,8 +37,8 @@ double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
   if (nd == 0) return NAN;
   const Double3& p0 = ray.head().xyz();
   const double numerator = n.dot(q - p0);
-  const double roundoff = 8 * std::numeric_limits<double>::epsilon() *
-                          std::max(magnitude(q), magnitude(p0));
+  const double roundoff =
+      8 * std::numeric_limits<double>::epsilon() * std::max(magnitude(q), magnitude(p0));
   if (std::abs(numerator) <= roundoff) return NAN;
   return numerator / nd;
 }

@@ -36,8 +36,7 @@ class Intersectable {
   virtual ~Intersectable() = default;
 
   /// The nearest hit with t in (0, tMax]. Allocates nothing.
-  virtual std::optional<Hit> closestHit(const Ray& ray,
-                                        double tMax = INFINITE_DISTANCE) const = 0;
+  virtual std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE) const = 0;
 
   /// Calls visit for every hit with t in (0, tMax], in no particular order, until visit returns
   /// false. Returns false when visit stopped the walk, true when every hit was visited.

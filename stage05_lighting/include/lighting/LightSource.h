@@ -24,9 +24,18 @@ struct PointLight {
   Point position;
   double kC = 1, kL = 0, kQ = 0;
   PointLight(const Color& i, const Point& p) : intensity(i), position(p) {}
-  PointLight& setKc(double v) { kC = v; return *this; }
-  PointLight& setKl(double v) { kL = v; return *this; }
-  PointLight& setKq(double v) { kQ = v; return *this; }
+  PointLight& setKc(double v) {
+    kC = v;
+    return *this;
+  }
+  PointLight& setKl(double v) {
+    kL = v;
+    return *this;
+  }
+  PointLight& setKq(double v) {
+    kQ = v;
+    return *this;
+  }
 };
 
 /// A point light aimed along direction: the point light's intensity times
@@ -36,10 +45,22 @@ struct SpotLight : PointLight {
   double narrowBeam = 1;
   SpotLight(const Color& i, const Point& p, const Vector& d)
       : PointLight(i, p), direction(d.normalized()) {}
-  SpotLight& setKc(double v) { kC = v; return *this; }
-  SpotLight& setKl(double v) { kL = v; return *this; }
-  SpotLight& setKq(double v) { kQ = v; return *this; }
-  SpotLight& setNarrowBeam(double v) { narrowBeam = v; return *this; }
+  SpotLight& setKc(double v) {
+    kC = v;
+    return *this;
+  }
+  SpotLight& setKl(double v) {
+    kL = v;
+    return *this;
+  }
+  SpotLight& setKq(double v) {
+    kQ = v;
+    return *this;
+  }
+  SpotLight& setNarrowBeam(double v) {
+    narrowBeam = v;
+    return *this;
+  }
 };
 
 using LightSource = std::variant<DirectionalLight, PointLight, SpotLight>;

@@ -26,8 +26,7 @@ struct LitScene : Scene {
 
   LitScene() = default;
   /// An unlit scene (stage 4) as a lit one: every shape gets the default Appearance.
-  explicit LitScene(const Scene& base)
-      : Scene(base), appearances(base.geometries.size()) {}
+  explicit LitScene(const Scene& base) : Scene(base), appearances(base.geometries.size()) {}
 
   /// Adds a shape with its appearance and returns its index.
   std::uint32_t add(Geometry shape, const Color& emission = Color::BLACK,

@@ -1,0 +1,32 @@
+# shellcheck shell=bash disable=SC2034  # sourced: RT_ROOT and RT_JOBS are for the caller
+# Shared by the scripts in this folder; sourced, not run.
+#
+# Sets RT_ROOT (the repository root, whatever directory the caller ran from) and RT_JOBS (parallel
+# build and test jobs: the number of cores unless RT_JOBS is already set), and defines
+#   rt_banner TEXT      a banner line on stdout
+#   rt_die TEXT         an error line on stderr, then exit 1
+#   rt_now              seconds since the epoch, with a fraction
+#   rt_elapsed START    the time since START (from rt_now) as "12.3 s" or "4 min 05 s"
+
+RT_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+RT_JOBS="${RT_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+
+rt_banner() { printf '\n==== %s ====\n' "$*"; }
+
+rt_die() {
+  printf '%s: error: %s\n' "$(basename "$0")" "$*" >&2
+  exit 1
+}
+
+rt_now() { date +%s.%N; }
+
+rt_elapsed() {
+  awk -v a="$1" -v b="$(rt_now)" 'BEGIN {
+    s = b - a
+    if (s < 60) printf "%.1f s", s
+    else printf "%d min %02d s", int(s / 60), int(s) % 60
+  }'
+}
+
+# Prints the comment block at the top of the running script (its usage), without the '#'.
+rt_usage() { awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; }

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project builds with, when they are missing.
+#
+#   scripts/deps.sh [--dry-run] [--pretend-missing PKG]... [EXTRA_PKG]...
+#
+# Silent, and touches nothing, when every package is already installed. Otherwise it runs
+# `apt-get update` once and installs only the missing packages (through sudo when not root).
+# EXTRA_PKG names packages that a caller needs beyond the build's own (CI adds clang for the
+# fuzzer). --dry-run prints what would be installed and exits 0 without changing anything;
+# --pretend-missing treats PKG as not installed (to try the install path on a complete machine).
+set -euo pipefail
+
+# What the build needs: compiler and build tool, CMake, GoogleTest and GoogleMock, stb (PNG
+# output) and nlohmann-json (scene files). The CMake files name the same packages when one is
+# missing.
+packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev)
+
+dry_run=0
+pretend=()
+while (($#)); do
+  case "$1" in
+    --dry-run) dry_run=1 ;;
+    --pretend-missing)
+      (($# >= 2)) || { echo "deps.sh: --pretend-missing needs a package name" >&2; exit 2; }
+      pretend+=("$2")
+      shift
+      ;;
+    -h | --help)
+      sed -n '2,10s/^# \{0,1\}//p' "$0"
+      exit 0
+      ;;
+    -*) echo "deps.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    *) packages+=("$1") ;;
+  esac
+  shift
+done
+
+installed() {
+  local p
+  for p in "${pretend[@]+"${pretend[@]}"}"; do
+    [[ "$p" == "$1" ]] && return 1
+  done
+  [[ "$(dpkg-query -W -f='${db:Status-Status}' "$1" 2>/dev/null)" == installed ]]
+}
+
+if ! command -v dpkg-query >/dev/null 2>&1 || ! command -v apt-get >/dev/null 2>&1; then
+  echo "deps.sh: not a Debian-like system (no dpkg-query/apt-get); install these yourself:" \
+       "${packages[*]}" >&2
+  exit 0  # CMake names any package it still cannot find.
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  installed "$p" || missing+=("$p")
+done
+((${#missing[@]})) || exit 0
+
+if ((EUID == 0)); then
+  sudo=()
+elif command -v sudo >/dev/null 2>&1; then
+  sudo=(sudo)
+else
+  echo "deps.sh: missing packages: ${missing[*]}" >&2
+  echo "deps.sh: not root and no sudo; as root, run:" \
+       "apt-get update && apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+
+apt_update=("${sudo[@]+"${sudo[@]}"}" apt-get update -qq)
+apt_install=("${sudo[@]+"${sudo[@]}"}" env DEBIAN_FRONTEND=noninteractive
+             apt-get install -y -qq --no-install-recommends "${missing[@]}")
+if ((dry_run)); then
+  echo "deps.sh: dry run, missing: ${missing[*]}"
+  echo "deps.sh: dry run, would run: ${apt_update[*]}"
+  echo "deps.sh: dry run, would run: ${apt_install[*]}"
+  exit 0
+fi
+echo "deps.sh: installing missing Debian packages: ${missing[*]}"
+"${apt_update[@]}"
+"${apt_install[@]}" >/dev/null
+echo "deps.sh: installed ${missing[*]}"

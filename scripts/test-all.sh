@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test.
+#
+#   scripts/test-all.sh [CTEST_OPTION]...
+#
+# Works from any directory on a fresh Debian machine: installs missing packages
+# (scripts/deps.sh), configures the release preset, builds all targets and runs ctest with output
+# on failure. Options go to ctest (for example -L stage03, or -R Sphere). The last line printed is
+# ctest's summary ("100% tests passed, 0 tests failed out of N"); the exit code is ctest's. Set
+# RT_BUILD_DIR to build somewhere other than build/release, RT_JOBS to change the parallelism.
+set -euo pipefail
+# shellcheck source-path=SCRIPTDIR source=common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+
+case "${1:-}" in
+  -h | --help) rt_usage; exit 0 ;;
+esac
+
+cd "$RT_ROOT"
+"$RT_ROOT/scripts/deps.sh"
+
+build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/release}"
+rt_banner "Configuring (release preset) in $build_dir"
+cmake --preset release -B "$build_dir" >/dev/null
+rt_banner "Building"
+start="$(rt_now)"
+cmake --build "$build_dir" --parallel "$RT_JOBS"
+echo "Built in $(rt_elapsed "$start")"
+
+rt_banner "Testing"
+log="$build_dir/test-all.log"
+set +e
+ctest --test-dir "$build_dir" --output-on-failure --parallel "$RT_JOBS" "$@" 2>&1 | tee "$log"
+status="${PIPESTATUS[0]}"
+set -e
+# ctest prints its summary line before the label times and the list of failures; repeat it so
+# that it is the last line, where a reader (or CI) looks.
+summary="$(grep -E '^[0-9]+% tests passed' "$log" | tail -n 1 || true)"
+if [[ -n "$summary" ]]; then
+  echo
+  echo "$summary"
+fi
+exit "$status"
