@@ -1,6 +1,8 @@
 #include "primitives/Vector.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -49,7 +51,15 @@ Vector Vector::cross(const Vector& o) const {
 
 double Vector::length() const { return std::sqrt(lengthSquared()); }
 
-Vector Vector::normalized() const { return Vector(xyz_ / length(), Unchecked{}); }
+Vector Vector::normalized() const {
+  const double l2 = lengthSquared();
+  if (l2 < std::numeric_limits<double>::infinity())
+    return Vector(xyz_ / std::sqrt(l2), Unchecked{});
+  // |v|² overflowed (components beyond ~1e154): scale by the largest component first, or the
+  // division by an infinite length would make the zero vector.
+  const Double3 scaled = xyz_ / std::max({std::abs(xyz_.x), std::abs(xyz_.y), std::abs(xyz_.z)});
+  return Vector(scaled / std::sqrt(scaled.lengthSquared()), Unchecked{});
+}
 
 std::ostream& operator<<(std::ostream& os, const Vector& v) { return os << v.xyz(); }
 

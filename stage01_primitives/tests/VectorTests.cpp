@@ -138,6 +138,12 @@ TEST(VectorTests, normalized) {
   EXPECT_EQ(Vector(0, 3, 4).normalized(), Vector(0, 0.6, 0.8));
   // TC11: a vector of length exactly 2^-40 still normalises to unit length
   EXPECT_NEAR(Vector(kThreshold, 0, 0).normalized().length(), 1.0, 1e-12);
+  // TC12: components so large (1e200) that the squared length overflows to infinity still
+  // normalise exactly (not to the zero vector)
+  const Vector huge = Vector(1e200, -1e200, 0).normalized();
+  EXPECT_DOUBLE_EQ(huge.x(), std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(huge.y(), -std::sqrt(0.5));
+  EXPECT_EQ(huge.z(), 0.0);
 }
 
 }  // namespace

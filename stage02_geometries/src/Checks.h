@@ -18,4 +18,14 @@ inline double requirePositive(double value, const char* what, const char* name) 
   return value;
 }
 
+/// @throws std::invalid_argument "<what>: <name> must be finite, got <value>" for a component
+/// that is infinite or NaN (including one that overflowed while the shape was derived).
+inline const Double3& requireFinite(const Double3& value, const char* what, const char* name) {
+  if (!value.isFinite()) {
+    throw std::invalid_argument(std::string(what) + ": " + name + " must be finite, got " +
+                                value.str());
+  }
+  return value;
+}
+
 }  // namespace rt::detail

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "Checks.h"
+
 namespace rt {
 
 namespace {
@@ -13,13 +15,25 @@ Vector normalOf(const Point& p1, const Point& p2, const Point& p3) {
                                 ", " + p3.xyz().str() +
                                 " do not define a plane (two coincide or all are collinear)");
   }
+  if (!n.isFinite()) {
+    throw std::invalid_argument("Plane: the normal of the points " + p1.xyz().str() + ", " +
+                                p2.xyz().str() + ", " + p3.xyz().str() +
+                                " overflows (coordinates too large)");
+  }
   return Vector(n).normalized();
 }
 }  // namespace
 
-Plane::Plane(const Point& q, const Vector& normal) : q_(q), normal_(normal.normalized()) {}
+// Coordinates so large that the normal overflows (|coordinate| beyond ~1e154) leave a NaN
+// normal; both constructors refuse it rather than build a plane every ray misses.
+Plane::Plane(const Point& q, const Vector& normal) : q_(q), normal_(normal.normalized()) {
+  detail::requireFinite(q_.xyz(), "Plane", "point");
+  detail::requireFinite(normal_.xyz(), "Plane", "normal");
+}
 
 Plane::Plane(const Point& p1, const Point& p2, const Point& p3)
-    : q_(p1), normal_(normalOf(p1, p2, p3)) {}
+    : q_(p1), normal_(normalOf(p1, p2, p3)) {
+  detail::requireFinite(q_.xyz(), "Plane", "point");
+}
 
 }  // namespace rt

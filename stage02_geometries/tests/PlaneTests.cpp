@@ -50,6 +50,23 @@ TEST(PlaneTests, constructorPointNormal) {
   expectVector(Plane(Point(0, 0, 0), Vector(0, 0, -1)).normal(), 0, 0, -1);
 }
 
+TEST(PlaneTests, constructorNonFinite) {
+  // =============== Boundary Values Tests ==================
+  // TC11: coordinates so large (1e200) that the cross product overflows: the normal would be
+  // NaN, so the constructor refuses it
+  EXPECT_THAT([] { Plane(Point(0, 0, 0), Point(1e200, 0, 0), Point(0, 1e200, 0)); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("Plane: the normal of the points (0,0,0), (1e+200,0,0), (0,1e+200,0) "
+                            "overflows (coordinates too large)")));
+  // TC12: a point at infinity
+  EXPECT_THAT([] { Plane(Point(INFINITY, 0, 0), Vector(0, 0, 1)); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("Plane: point must be finite, got (inf,0,0)")));
+  // TC14: a finite normal whose squared length overflows is still normalised correctly
+  expectVector(Plane(Point(0, 0, 0), Vector(1e200, 0, 1e200)).normal(), std::sqrt(0.5), 0,
+               std::sqrt(0.5));
+}
+
 TEST(PlaneTests, normal) {
   const Point p1(1, 0, 0);
   const Point p2(1, 1, 0);

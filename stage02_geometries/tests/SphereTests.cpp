@@ -42,6 +42,14 @@ TEST(SphereTests, constructor) {
   EXPECT_NO_THROW(Sphere(Point(0, 0, 0), 1e-9));
 }
 
+TEST(SphereTests, constructorNonFiniteCenter) {
+  // =============== Boundary Values Tests ==================
+  // TC11: a centre with a NaN coordinate is refused, naming the centre
+  EXPECT_THAT([] { Sphere(Point(NAN, 0, 0), 1); },
+              ThrowsMessage<std::invalid_argument>(
+                  HasSubstr("Sphere: center must be finite, got (nan,0,0)")));
+}
+
 TEST(SphereTests, normal) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: course: centre (0,0,0) r=12, P=(0,0,12) -> (0,0,1)

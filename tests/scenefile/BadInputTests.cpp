@@ -200,7 +200,7 @@ const BadInput BAD_INPUTS[] = {
      "}\n",
      "bad.json:4:51: geometries[0].vertices: Plane: the points (0,0,0), (1,0,0), (2,0,0) do not "
      "define a plane (two coincide or all are collinear)"},
-    // EP45: a triangle so large that its normal overflows (the constructor accepts it)
+    // EP45: a triangle so large that its normal overflows (the constructor refuses it)
     {"HugeTriangle",
      "{\n"
      "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
@@ -208,8 +208,8 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, "
      "1e300, 0]]}]\n"
      "}\n",
-     "bad.json:4:51: geometries[0].vertices: the plane's normal overflows (coordinates too large); "
-     "expected points closer together"},
+     "bad.json:4:51: geometries[0].vertices: Plane: the normal of the points (0,0,0), (1e+300,0,0), "
+     "(0,1e+300,0) overflows (coordinates too large)"},
     // EP23: zero normal
     {"ZeroNormal",
      "{\n"

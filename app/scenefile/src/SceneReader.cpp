@@ -253,14 +253,6 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   f.materialName = name;
 }
 
-/// False for a flat shape whose plane normal is not finite.
-bool planeNormalIsFinite(const Geometry& g) {
-  if (const auto* p = std::get_if<Plane>(&g)) return p->normal().xyz().isFinite();
-  if (const auto* t = std::get_if<Triangle>(&g)) return t->plane().normal().xyz().isFinite();
-  if (const auto* q = std::get_if<Polygon>(&g)) return q->plane().normal().xyz().isFinite();
-  return true;
-}
-
 /// Adds the shape built by make() to the scene; a constructor's refusal is reported at the
 /// member `at` of the geometry (its "vertices", say), or at the geometry itself.
 template <typename Make>
@@ -272,12 +264,6 @@ void addGeometry(const Node& n, GeometryFields& f, std::string_view at, Make mak
   } catch (const std::invalid_argument& e) {
     place.fail(e.what());
   }
-  // Points far apart (beyond about 1e154) make the cross product behind a plane's normal
-  // overflow: the constructors accept them, but the normal is not a number.
-  if (!planeNormalIsFinite(*shape))
-    place.fail(
-        "the plane's normal overflows (coordinates too large); expected points closer "
-        "together");
   SceneDocument& doc = n.context().doc;
   try {
     doc.scene.add(std::move(*shape), f.emission, f.material);
