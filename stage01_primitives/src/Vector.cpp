@@ -51,7 +51,7 @@ Vector Vector::cross(const Vector& o) const {
 
 double Vector::length() const { return std::sqrt(lengthSquared()); }
 
-Vector Vector::normalized() const {
+Vector Vector::normalized() const noexcept {
   const double l2 = lengthSquared();
   if (l2 < std::numeric_limits<double>::infinity())
     return Vector(xyz_ / std::sqrt(l2), Unchecked{});

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "Checks.h"
+#include "primitives/Checks.h"
 
 namespace rt {
 
@@ -27,13 +27,13 @@ Vector normalOf(const Point& p1, const Point& p2, const Point& p3) {
 // Coordinates so large that the normal overflows (|coordinate| beyond ~1e154) leave a NaN
 // normal; both constructors refuse it rather than build a plane every ray misses.
 Plane::Plane(const Point& q, const Vector& normal) : q_(q), normal_(normal.normalized()) {
-  detail::requireFinite(q_.xyz(), "Plane", "point");
-  detail::requireFinite(normal_.xyz(), "Plane", "normal");
+  requireFinite(q_.xyz(), "Plane", "point");
+  requireFinite(normal_.xyz(), "Plane", "normal");
 }
 
 Plane::Plane(const Point& p1, const Point& p2, const Point& p3)
     : q_(p1), normal_(normalOf(p1, p2, p3)) {
-  detail::requireFinite(q_.xyz(), "Plane", "point");
+  requireFinite(q_.xyz(), "Plane", "point");
 }
 
 }  // namespace rt

@@ -9,27 +9,36 @@ std::uint32_t Geometries::add(Geometry shape) {
   return static_cast<std::uint32_t>(shapes_.size() - 1);
 }
 
-std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax) const {
+std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
+                                          QueryCounts* counts) const noexcept {
   std::optional<Hit> best;
   for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
     const Roots roots = intersectRoots(shapes_[i], ray);
-    // Roots are ascending: the first is this shape's nearest. tMax shrinks with every hit.
-    if (!roots.empty() && withinDistance(roots[0], tMax)) {
+    // Roots are ascending: the first is this shape's nearest. Shapes come in index order, so a
+    // strictly nearer hit is needed to replace the best one: equal t keeps the smaller index.
+    if (!roots.empty() && withinDistance(roots[0], tMax) && (!best || roots[0] < best->t))
       best = Hit{roots[0], i};
-      tMax = roots[0];
-    }
   }
+  if (counts != nullptr) counts->shapeTests += shapes_.size();
   return best;
 }
 
-bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit) const {
-  for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
+bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
+                            QueryCounts* counts) const {
+  std::uint32_t tested = 0;
+  bool complete = true;
+  for (std::uint32_t i = 0; i < shapes_.size() && complete; ++i) {
+    ++tested;
     for (double t : intersectRoots(shapes_[i], ray)) {
       if (!withinDistance(t, tMax)) break;
-      if (!visit(Hit{t, i})) return false;
+      if (!visit(Hit{t, i})) {
+        complete = false;
+        break;
+      }
     }
   }
-  return true;
+  if (counts != nullptr) counts->shapeTests += tested;
+  return complete;
 }
 
 std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
@@ -39,8 +48,9 @@ std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
     points.push_back(GeoPoint{hit.geometry, ray.point(hit.t), hit.t});
     return true;
   });
-  std::sort(points.begin(), points.end(),
-            [](const GeoPoint& a, const GeoPoint& b) { return a.t < b.t; });
+  std::sort(points.begin(), points.end(), [](const GeoPoint& a, const GeoPoint& b) {
+    return a.t < b.t || (a.t == b.t && a.geometry < b.geometry);
+  });
   return points;
 }
 

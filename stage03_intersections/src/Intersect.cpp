@@ -102,18 +102,22 @@ Roots intersectRoots(const Plane& p, const Ray& ray) noexcept {
   return roots;
 }
 
-Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept {
+namespace {
+/// A flat convex shape (triangle or polygon): its plane's root, kept when the ray passes inside.
+Roots flatRoots(const Plane& plane, std::span<const Point> vertices, const Ray& ray) noexcept {
   Roots roots;
-  const double tHit = planeT(t.plane().point().xyz(), t.plane().normal().xyz(), ray);
-  if (alignZero(tHit) > 0 && passesInside(t.vertices(), ray)) roots.add(tHit);
+  const double tHit = planeT(plane.point().xyz(), plane.normal().xyz(), ray);
+  if (alignZero(tHit) > 0 && passesInside(vertices, ray)) roots.add(tHit);
   return roots;
+}
+}  // namespace
+
+Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept {
+  return flatRoots(t.plane(), t.vertices(), ray);
 }
 
 Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept {
-  Roots roots;
-  const double tHit = planeT(p.plane().point().xyz(), p.plane().normal().xyz(), ray);
-  if (alignZero(tHit) > 0 && passesInside(p.vertices(), ray)) roots.add(tHit);
-  return roots;
+  return flatRoots(p.plane(), p.vertices(), ray);
 }
 
 namespace {

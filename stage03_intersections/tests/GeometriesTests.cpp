@@ -128,6 +128,52 @@ TEST(GeometriesTests, forEachHit) {
   EXPECT_EQ(calls, 0);
 }
 
+TEST(GeometriesTests, closestHitTiesGoToTheSmallestIndex) {
+  // The rule every Intersectable follows, so that an acceleration structure visiting the shapes
+  // in another order returns the same hit: the smallest (t, geometry) pair wins.
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: from below, the sphere's near point (0,0,0) at t = 5 comes before the flat shapes at
+  // (0,0,1), t = 6: the sphere wins
+  const Geometries g{kTriangle, kSphere, kSquareB};
+  const Ray fromBelow(Point(0, 0, -5), Vector(0, 0, 1));
+  ASSERT_TRUE(g.closestHit(fromBelow).has_value());
+  EXPECT_EQ(1u, g.closestHit(fromBelow)->geometry);
+  // TC02: without the sphere, the two flat shapes tie at t = 6: the smaller index wins, in
+  // either order of addition
+  const Geometries flat{kTriangle, kSquareB};
+  ASSERT_TRUE(flat.closestHit(fromBelow).has_value());
+  EXPECT_EQ(0u, flat.closestHit(fromBelow)->geometry);
+  EXPECT_EQ(6.0, flat.closestHit(fromBelow)->t);
+  const Geometries reversed{kSquareB, kTriangle};
+  EXPECT_EQ(0u, reversed.closestHit(fromBelow)->geometry);
+  // =============== Boundary Values Tests ==================
+  // TC11: a tie exactly at an inclusive tMax still goes to the smaller index
+  EXPECT_EQ(0u, flat.closestHit(fromBelow, 6)->geometry);
+}
+
+TEST(GeometriesTests, queryCounts) {
+  const Geometries g{kTriangle, kSphere, kSquareB};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a closest-hit query tests every shape once, and visits no hierarchy node
+  QueryCounts counts;
+  (void)g.closestHit(kDownAtOrigin, INFINITE_DISTANCE, &counts);
+  EXPECT_EQ((QueryCounts{3, 0}), counts);
+  // TC02: counts add up over queries
+  (void)g.closestHit(Ray(Point(0, 0, 100), Vector(0, 0, 1)), INFINITE_DISTANCE, &counts);
+  EXPECT_EQ((QueryCounts{6, 0}), counts);
+  // TC03: a walk stopped at the first hit (the triangle, shape 0) tested one shape
+  QueryCounts walk;
+  g.forEachHit(kDownAtOrigin, INFINITE_DISTANCE, [](const Hit&) { return false; }, &walk);
+  EXPECT_EQ(1u, walk.shapeTests);
+  // =============== Boundary Values Tests ==================
+  // TC11: no counts given: nothing to add to, nothing breaks
+  EXPECT_TRUE(g.closestHit(kDownAtOrigin).has_value());
+  // TC12: an empty collection tests nothing
+  QueryCounts none;
+  (void)Geometries().closestHit(kDownAtOrigin, INFINITE_DISTANCE, &none);
+  EXPECT_EQ(QueryCounts{}, none);
+}
+
 TEST(GeometriesTests, addAndAccess) {
   // TC01: add returns each shape's index; size, empty and indexing follow
   Geometries g;

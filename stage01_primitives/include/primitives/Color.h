@@ -39,6 +39,17 @@ class Color {
   /// @throws std::invalid_argument for a factor that is not positive.
   Color operator/(double k) const;
 
+  // The per-ray path must never throw (an exception escaping a render thread ends the program),
+  // and there every factor is a product of coefficients that were validated, once, when the
+  // scene was built. These forms skip the check; everywhere else use the operators above.
+
+  /// this·k for a finite k >= 0 (not checked).
+  Color scaledUnchecked(double k) const noexcept { return Color(rgb_ * k, Unchecked{}); }
+  /// this·k per channel for finite coefficients >= 0 (not checked).
+  Color scaledUnchecked(const Double3& k) const noexcept { return Color(rgb_ * k, Unchecked{}); }
+  /// A colour from a triple the caller knows is finite and non-negative (not checked).
+  static constexpr Color unchecked(const Double3& rgb) noexcept { return Color(rgb, Unchecked{}); }
+
   /// Course equality: every channel of the difference isZero.
   bool operator==(const Color& o) const { return rgb_ == o.rgb_; }
 
@@ -54,7 +65,7 @@ class Color {
 
  private:
   struct Unchecked {};
-  constexpr Color(const Double3& rgb, Unchecked) : rgb_(rgb) {}
+  constexpr Color(const Double3& rgb, Unchecked) noexcept : rgb_(rgb) {}
   Double3 rgb_;
 };
 

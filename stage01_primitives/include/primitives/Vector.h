@@ -18,6 +18,12 @@ class Vector {
   /// @throws std::invalid_argument when every component isZero.
   explicit Vector(const Double3& xyz);
 
+  /// A vector from a triple the caller knows is not zero, without the check: for the per-ray
+  /// path, which must never throw (a reflected direction has length 1, a light's direction
+  /// points from a position that was checked to differ from the point). Everywhere else use
+  /// the constructor.
+  static Vector unchecked(const Double3& nonZero) noexcept { return Vector(nonZero, Unchecked{}); }
+
   double x() const { return xyz_.x; }
   double y() const { return xyz_.y; }
   double z() const { return xyz_.z; }
@@ -38,7 +44,7 @@ class Vector {
   double lengthSquared() const { return xyz_.lengthSquared(); }
   double length() const;
   /// The unit vector in the same direction (never throws: a Vector is never zero).
-  Vector normalized() const;
+  Vector normalized() const noexcept;
 
   /// Course equality: every component of the difference isZero.
   bool operator==(const Vector& o) const { return xyz_ == o.xyz_; }
@@ -51,7 +57,7 @@ class Vector {
   friend class Point;
   struct Unchecked {};
   /// For results that cannot be zero by construction (negation, normalisation).
-  Vector(const Double3& xyz, Unchecked) : xyz_(xyz) {}
+  Vector(const Double3& xyz, Unchecked) noexcept : xyz_(xyz) {}
   Double3 xyz_;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 /// @file Cylinder.h
 
+#include <optional>
+
 #include "geometries/Tube.h"
 
 namespace rt {
@@ -22,8 +24,14 @@ class Cylinder {
   /// included) -axisDir; on the top base (axial coordinate - height isZero) +axisDir; elsewhere
   /// the tube's normal.
   Vector normal(const Point& p) const;
+  /// The same normal for the per-ray path: never throws; nullopt only when a side point is
+  /// exactly on the axis.
+  std::optional<Vector> tryNormal(const Point& p) const noexcept;
 
  private:
+  /// The base's normal when p is on a base (its centre and rim included), else nullopt.
+  std::optional<Vector> baseNormal(const Point& p) const noexcept;
+
   Tube tube_;
   double height_;
 };

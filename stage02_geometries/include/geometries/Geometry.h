@@ -21,7 +21,14 @@ namespace rt {
 using Geometry = std::variant<Sphere, Plane, Triangle, Polygon, Tube, Cylinder>;
 
 /// The outward unit normal of any shape at a point of its surface.
+/// @throws std::invalid_argument where the normal is undefined (a sphere's centre, a tube's
+///         axis).
 Vector normalAt(const Geometry& g, const Point& p);
+
+/// The same normal for the per-ray path, which must never throw: where the normal is undefined
+/// (exactly at a sphere's centre or on a tube's axis, which only a shape far smaller than its
+/// coordinates' rounding error can put under a hit point) it returns fallback instead.
+Vector hitNormal(const Geometry& g, const Point& p, const Vector& fallback) noexcept;
 
 /// The course's lower-case name of the shape ("sphere", "plane", ...).
 const char* shapeName(const Geometry& g);

@@ -1,6 +1,8 @@
 #pragma once
 /// @file Sphere.h
 
+#include <optional>
+
 #include "primitives/Point.h"
 #include "primitives/Vector.h"
 
@@ -18,6 +20,9 @@ class Sphere {
   /// Outward unit normal at a point of the surface: normalize(p - center).
   /// @throws std::invalid_argument when p is the centre (the normal is undefined there).
   Vector normal(const Point& p) const;
+  /// The same normal for the per-ray path: never throws; nullopt only when p is exactly the
+  /// centre.
+  std::optional<Vector> tryNormal(const Point& p) const noexcept;
 
  private:
   Point center_;

@@ -1,6 +1,8 @@
 #pragma once
 /// @file Tube.h
 
+#include <optional>
+
 #include "primitives/Point.h"
 #include "primitives/Ray.h"
 #include "primitives/Vector.h"
@@ -19,8 +21,14 @@ class Tube {
   /// Outward unit normal: with s = axisDir·(p - P0) and O = P0 + s·axisDir, normalize(p - O).
   /// @throws std::invalid_argument when p lies on the axis.
   Vector normal(const Point& p) const;
+  /// The same normal for the per-ray path: never throws; nullopt only when p is exactly on the
+  /// axis.
+  std::optional<Vector> tryNormal(const Point& p) const noexcept;
 
  private:
+  /// p − O, O the axis point level with p (the unnormalised normal).
+  Double3 radial(const Point& p) const noexcept;
+
   double radius_;
   Ray axis_;
 };

@@ -31,19 +31,43 @@ struct GeoPoint {
 /// Called for each hit; returns true to go on, false to stop.
 using HitVisitor = FunctionRef<bool(const Hit&)>;
 
+/// What intersection queries cost, to explain timings rather than only measure them: how many
+/// exact ray-shape tests were made, and how many nodes of a bounding-volume hierarchy were
+/// visited (always 0 for the course's linear Geometries). A query adds to the counts it is
+/// given; the renderer gives each thread its own and adds them up once per block of pixels.
+struct QueryCounts {
+  std::uint64_t shapeTests = 0;    ///< intersectRoots calls
+  std::uint64_t nodesVisited = 0;  ///< hierarchy nodes whose box was tested
+
+  QueryCounts& operator+=(const QueryCounts& o) noexcept {
+    shapeTests += o.shapeTests;
+    nodesVisited += o.nodesVisited;
+    return *this;
+  }
+  bool operator==(const QueryCounts&) const = default;
+};
+
 class Intersectable {
  public:
   virtual ~Intersectable() = default;
 
-  /// The nearest hit with t in (0, tMax]. Allocates nothing.
-  virtual std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE) const = 0;
+  /// The nearest hit with t in (0, tMax] (tMax inclusive, as withinDistance). When several
+  /// shapes are hit at exactly the same t, the one with the smallest index wins: the answer is
+  /// the smallest (t, geometry) pair, so every implementation (a linear scan, a hierarchy that
+  /// visits shapes in another order) returns the same hit. Allocates nothing, never throws.
+  /// @param counts when not null, the query adds what it cost.
+  virtual std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE,
+                                        QueryCounts* counts = nullptr) const noexcept = 0;
 
   /// Calls visit for every hit with t in (0, tMax], in no particular order, until visit returns
   /// false. Returns false when visit stopped the walk, true when every hit was visited.
   /// Allocates nothing; this is what shadow queries are built on.
-  virtual bool forEachHit(const Ray& ray, double tMax, HitVisitor visit) const = 0;
+  /// @param counts when not null, the query adds what it cost.
+  virtual bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
+                          QueryCounts* counts = nullptr) const = 0;
 
-  /// The course's findGeoIntersections: every hit in (0, maxDistance], sorted by distance.
+  /// The course's findGeoIntersections: every hit in (0, maxDistance], sorted by distance (equal
+  /// distances by geometry index).
   std::vector<GeoPoint> findGeoIntersections(const Ray& ray,
                                              double maxDistance = INFINITE_DISTANCE) const;
   /// The course's findIntersections: the points of findGeoIntersections.
