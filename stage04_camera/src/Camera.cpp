@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "primitives/Checks.h"
 #include "primitives/Util.h"
 
 namespace rt {
@@ -20,18 +21,21 @@ struct Frame {
   throw std::logic_error(std::string(operation) + ": missing rendering data '" + field + "'");
 }
 
-void requireFinite(const Double3& v, const char* operation, const char* argument) {
-  if (!v.isFinite()) {
-    throw std::invalid_argument(std::string(operation) + ": " + argument + " must be finite, got " +
-                                v.str());
+/// A view-plane size or distance: a positive finite number, and not the course's zero (below
+/// 2^-40 the view plane's points would be indistinguishable from each other).
+void requireViewPlaneLength(double v, const char* operation, const char* argument) {
+  requirePositive(v, operation, argument);
+  if (isZero(v)) {
+    throw std::invalid_argument(std::string(operation) + ": " + argument +
+                                " must be above the course's zero 2^-40, got " + formatNumber(v));
   }
 }
 
-/// A view-plane size or distance: positive after alignZero, and finite.
-void requirePositive(double v, const char* operation, const char* argument) {
-  if (!(std::isfinite(v) && alignZero(v) > 0)) {
+/// A lens length: a finite number >= 0 (0 means "none" or "the default").
+void requireNonNegative(double v, const char* operation, const char* argument) {
+  if (!(std::isfinite(v) && v >= 0)) {
     throw std::invalid_argument(std::string(operation) + ": " + argument +
-                                " must be a positive number, got " + formatNumber(v));
+                                " must be a non-negative finite number, got " + formatNumber(v));
   }
 }
 
@@ -79,14 +83,22 @@ void cosSinDegrees(double degrees, double& c, double& s) {
 
 Camera::Builder Camera::builder() { return Builder{}; }
 
-Ray Camera::pixelRay(int nX, int nY, int j, int i, double rx, double ry) const {
-  // Pij = pC + xJ·vRight + yI·vUp with pC = p0 + d·vTo,
-  // xJ = (j - (nX-1)/2)·rx and yI = -(i - (nY-1)/2)·ry (rows grow downwards, vUp upwards).
-  // The sum is taken on plain triples, so a zero xJ or yI needs no special case.
-  const double xJ = (j - (nX - 1) / 2.0) * rx;
-  const double yI = -(i - (nY - 1) / 2.0) * ry;
-  const Double3 pIJ = p0_.xyz() + vTo_.xyz() * vpDistance_ + vRight_.xyz() * xJ + vUp_.xyz() * yI;
-  return Ray(p0_, Point(pIJ) - p0_);
+Ray Camera::viewPlaneRay(double xRight, double yUp, const Sample2& lens) const noexcept {
+  // Pij = pC + xJ·vRight + yI·vUp with pC = p0 + d·vTo. The sum is taken on plain triples, so a
+  // zero xJ or yI needs no special case. Pij − p0 is never zero: build() checked that the view
+  // plane's centre differs from p0, and Pij − p0 has the component d along vTo.
+  const Double3& p0 = spec_.location.xyz();
+  const Double3 pIJ =
+      p0 + vTo_.xyz() * spec_.vpDistance + vRight_.xyz() * xRight + vUp_.xyz() * yUp;
+  if (spec_.aperture == 0) return Ray(spec_.location, Vector::unchecked(pIJ - p0));
+  // A thin lens: every ray through the lens that aims at the point where the pinhole ray meets
+  // the focal plane (at focal along vTo; the pinhole ray's vTo component is d, so it gets
+  // there at (focal / d) of Pij − p0) converges there: that plane is sharp, the rest is blurred
+  // by the aperture.
+  const Double3 focus = p0 + (pIJ - p0) * (focal_ / spec_.vpDistance);
+  const Double3 origin =
+      p0 + vRight_.xyz() * (spec_.aperture * lens.u) + vUp_.xyz() * (spec_.aperture * lens.v);
+  return Ray(Point(origin), Vector::unchecked(focus - origin));
 }
 
 Ray Camera::constructRay(int nX, int nY, int j, int i) const {
@@ -94,34 +106,24 @@ Ray Camera::constructRay(int nX, int nY, int j, int i) const {
     throw std::invalid_argument("Camera::constructRay: the resolution must be at least 1x1, got " +
                                 std::to_string(nX) + "x" + std::to_string(nY));
   }
-  return pixelRay(nX, nY, j, i, vpWidth_ / nX, vpHeight_ / nY);
+  // xJ = (j - (nX-1)/2)·rx and yI = -(i - (nY-1)/2)·ry (rows grow downwards, vUp upwards).
+  return viewPlaneRay((j - (nX - 1) / 2.0) * (spec_.vpWidth / nX),
+                      -(i - (nY - 1) / 2.0) * (spec_.vpHeight / nY), Sample2{});
 }
 
-void Camera::requireRayTracer(const char* operation) const {
-  if (!rayTracer_) throwMissing(operation, "rayTracer");
-}
-
-void Camera::renderBlock(const PixelBlock& b) {
-  requireRayTracer("Camera::renderBlock");
-  if (b.x0 < 0 || b.y0 < 0 || b.x1 > nX_ || b.y1 > nY_ || b.x0 >= b.x1 || b.y0 >= b.y1) {
-    throw std::invalid_argument("Camera::renderBlock: block columns [" + std::to_string(b.x0) +
-                                "," + std::to_string(b.x1) + ") rows [" + std::to_string(b.y0) +
-                                "," + std::to_string(b.y1) + ") is empty or not inside the " +
-                                std::to_string(nX_) + "x" + std::to_string(nY_) + " image");
-  }
-  const RayTracer& tracer = *rayTracer_;
-  const double rx = vpWidth_ / nX_;
-  const double ry = vpHeight_ / nY_;
-  for (int i = b.y0; i < b.y1; ++i)
-    for (int j = b.x0; j < b.x1; ++j)
-      image_.setPixel(j, i, tracer.traceRay(pixelRay(nX_, nY_, j, i, rx, ry)));
+Ray Camera::ray(double px, double py, const Sample2& lens) const noexcept {
+  // The same formula in continuous pixel units: for px = j + 0.5, px − nX/2 = j − (nX−1)/2
+  // exactly (both are small multiples of 1/2), so a pixel's centre gives constructRay's ray.
+  return viewPlaneRay((px - spec_.nX / 2.0) * pixelWidth_, -(py - spec_.nY / 2.0) * pixelHeight_,
+                      lens);
 }
 
 Camera& Camera::renderImage(const std::atomic<bool>* stop) {
-  requireRayTracer("Camera::renderImage");
-  for (int i = 0; i < nY_; ++i) {
+  if (!rayTracer_) throwMissing("Camera::renderImage", "rayTracer");
+  counts_ = {};
+  for (int i = 0; i < spec_.nY; ++i) {
     if (stop != nullptr && stop->load(std::memory_order_relaxed)) throw RenderInterrupted();
-    renderBlock({0, i, nX_, i + 1});
+    counts_ += renderBlock(*this, *rayTracer_, *pixelSampler_, {0, i, spec_.nX, i + 1}, image_);
   }
   return *this;
 }
@@ -143,9 +145,18 @@ Camera& Camera::writeToImage(const std::string& path) {
   return *this;
 }
 
+void Camera::setFrame(const Vector& vTo, const Vector& vUp, const Vector& vRight) {
+  vTo_ = vTo;
+  vUp_ = vUp;
+  vRight_ = vRight;
+  spec_.target.reset();
+  spec_.to = vTo;
+  spec_.up = vUp;
+}
+
 Camera& Camera::move(const Vector& offset) {
   requireFinite(offset.xyz(), "Camera::move", "offset");
-  p0_ = p0_ + offset;
+  spec_.location = spec_.location + offset;
   return *this;
 }
 
@@ -164,30 +175,42 @@ Camera& Camera::rotate(double angleDegrees) {
   cosSinDegrees(angleDegrees, c, s);
   const Double3 up = vUp_.xyz() * c - vRight_.xyz() * s;
   const Double3 right = vRight_.xyz() * c + vUp_.xyz() * s;
-  vUp_ = Vector(up).normalized();
-  vRight_ = Vector(right).normalized();
+  setFrame(vTo_, Vector(up).normalized(), Vector(right).normalized());
   return *this;
 }
 
 Camera& Camera::lookAt(const Point& target) {
   requireFinite(target.xyz(), "Camera::lookAt", "target");
-  const Frame f = aimedFrame(p0_, target, vUp_, "Camera::lookAt", "the camera's vUp");
-  vTo_ = f.vTo;
-  vUp_ = f.vUp;
-  vRight_ = f.vRight;
+  const Frame f = aimedFrame(spec_.location, target, vUp_, "Camera::lookAt", "the camera's vUp");
+  setFrame(f.vTo, f.vUp, f.vRight);
   return *this;
 }
 
 // ----------------------------------------------------------------------------------------------
 // Camera::Builder
 
-Camera::Builder& Camera::Builder::setLocation(const Point& p0) {
+CameraBuilder::CameraBuilder(const CameraSpec& spec) {
+  setLocation(spec.location);
+  // With neither a target nor a vTo the direction stays unset, and build() reports it missing.
+  if (spec.target) {
+    setDirection(*spec.target, spec.up);
+  } else if (spec.to) {
+    setDirection(*spec.to, spec.up);
+  }
+  setVpSize(spec.vpWidth, spec.vpHeight).setVpDistance(spec.vpDistance);
+  setResolution(spec.nX, spec.nY).setAperture(spec.aperture).setFocalDistance(spec.focalDistance);
+}
+
+CameraBuilder CameraSpec::builder() const { return CameraBuilder(*this); }
+
+CameraBuilder& CameraBuilder::setLocation(const Point& p0) {
   requireFinite(p0.xyz(), "Camera::Builder::setLocation", "location");
-  p0_ = p0;
+  spec_.location = p0;
+  hasLocation_ = true;
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setDirection(const Vector& vTo, const Vector& vUp) {
+CameraBuilder& CameraBuilder::setDirection(const Vector& vTo, const Vector& vUp) {
   constexpr const char* OP = "Camera::Builder::setDirection";
   requireFinite(vTo.xyz(), OP, "vTo");
   requireFinite(vUp.xyz(), OP, "vUp");
@@ -198,83 +221,110 @@ Camera::Builder& Camera::Builder::setDirection(const Vector& vTo, const Vector& 
                                 vUp.xyz().str() + " must be orthogonal, their unit vectors' " +
                                 "dot product is " + formatNumber(to.dot(up)));
   }
-  vTo_ = to;
-  vUp_ = up;
-  target_.reset();
+  spec_.to = to;
+  spec_.up = up;
+  spec_.target.reset();
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setDirection(const Point& target, const Vector& up) {
+CameraBuilder& CameraBuilder::setDirection(const Point& target, const Vector& up) {
   constexpr const char* OP = "Camera::Builder::setDirection";
   requireFinite(target.xyz(), OP, "target");
   requireFinite(up.xyz(), OP, "up");
-  target_ = target;
-  targetUp_ = up;
-  vTo_.reset();
-  vUp_.reset();
+  spec_.target = target;
+  spec_.up = up;
+  spec_.to.reset();
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setVpSize(double width, double height) {
-  requirePositive(width, "Camera::Builder::setVpSize", "width");
-  requirePositive(height, "Camera::Builder::setVpSize", "height");
-  vpWidth_ = width;
-  vpHeight_ = height;
+CameraBuilder& CameraBuilder::setVpSize(double width, double height) {
+  requireViewPlaneLength(width, "Camera::Builder::setVpSize", "width");
+  requireViewPlaneLength(height, "Camera::Builder::setVpSize", "height");
+  spec_.vpWidth = width;
+  spec_.vpHeight = height;
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setVpDistance(double distance) {
-  requirePositive(distance, "Camera::Builder::setVpDistance", "distance");
-  vpDistance_ = distance;
+CameraBuilder& CameraBuilder::setVpDistance(double distance) {
+  requireViewPlaneLength(distance, "Camera::Builder::setVpDistance", "distance");
+  spec_.vpDistance = distance;
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setResolution(int nX, int nY) {
+CameraBuilder& CameraBuilder::setResolution(int nX, int nY) {
   Image::checkSize(nX, nY, "Camera::Builder::setResolution");
-  nX_ = nX;
-  nY_ = nY;
+  spec_.nX = nX;
+  spec_.nY = nY;
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setRayTracer(std::shared_ptr<const RayTracer> tracer) {
+CameraBuilder& CameraBuilder::setAperture(double radius) {
+  requireNonNegative(radius, "Camera::Builder::setAperture", "radius");
+  spec_.aperture = radius;
+  return *this;
+}
+
+CameraBuilder& CameraBuilder::setFocalDistance(double distance) {
+  requireNonNegative(distance, "Camera::Builder::setFocalDistance", "distance");
+  spec_.focalDistance = distance;
+  return *this;
+}
+
+CameraBuilder& CameraBuilder::setRayTracer(std::shared_ptr<const RayTracer> tracer) {
   rayTracer_ = std::move(tracer);
   return *this;
 }
 
-Camera::Builder& Camera::Builder::setImageWriter(std::shared_ptr<const ImageWriter> writer) {
+CameraBuilder& CameraBuilder::setImageWriter(std::shared_ptr<const ImageWriter> writer) {
   imageWriter_ = std::move(writer);
   return *this;
 }
 
-Camera Camera::Builder::build() const {
+CameraBuilder& CameraBuilder::setPixelSampler(std::shared_ptr<const PixelSampler> sampler) {
+  pixelSampler_ = std::move(sampler);
+  return *this;
+}
+
+Camera CameraBuilder::build() const {
   constexpr const char* OP = "Camera::Builder";
-  if (!p0_) throwMissing(OP, "location");
-  if (!vTo_ && !target_) throwMissing(OP, "direction");
-  if (!vpWidth_) throwMissing(OP, "vpSize");
-  if (!vpDistance_) throwMissing(OP, "vpDistance");
-  if (!nX_) throwMissing(OP, "resolution");
+  if (!hasLocation_) throwMissing(OP, "location");
+  if (!spec_.to && !spec_.target) throwMissing(OP, "direction");
+  if (spec_.vpWidth == 0) throwMissing(OP, "vpSize");
+  if (spec_.vpDistance == 0) throwMissing(OP, "vpDistance");
+  if (spec_.nX == 0) throwMissing(OP, "resolution");
 
   Camera c;
-  c.p0_ = *p0_;
-  if (target_) {
-    const Frame f = aimedFrame(*p0_, *target_, targetUp_, "Camera::Builder::setDirection", "up");
+  c.spec_ = spec_;
+  if (spec_.target) {
+    const Frame f =
+        aimedFrame(spec_.location, *spec_.target, spec_.up, "Camera::Builder::setDirection", "up");
     c.vTo_ = f.vTo;
     c.vUp_ = f.vUp;
     c.vRight_ = f.vRight;
   } else {
-    c.vTo_ = *vTo_;
-    c.vUp_ = *vUp_;
+    c.vTo_ = *spec_.to;
+    c.vUp_ = spec_.up;
     // Unit and orthogonal (checked in setDirection), so the product is unit up to rounding.
-    c.vRight_ = vTo_->cross(*vUp_).normalized();
+    c.vRight_ = spec_.to->cross(spec_.up).normalized();
   }
-  c.vpWidth_ = *vpWidth_;
-  c.vpHeight_ = *vpHeight_;
-  c.vpDistance_ = *vpDistance_;
-  c.nX_ = *nX_;
-  c.nY_ = *nY_;
+  // Rays go from p0 through the view plane: its centre must be a different point than p0 in
+  // floating point, or every ray's direction would be zero (a location of 1e20 with a view
+  // plane at distance 1, say). Checked here so that making a ray never has to.
+  const Double3 centre = spec_.location.xyz() + c.vTo_.xyz() * spec_.vpDistance;
+  if ((centre - spec_.location.xyz()).isZero()) {
+    throw std::invalid_argument(std::string(OP) + ": the view plane at distance " +
+                                formatNumber(spec_.vpDistance) + " from the location " +
+                                spec_.location.xyz().str() +
+                                " rounds to the location itself (the distance is too small for "
+                                "coordinates this large)");
+  }
+  c.pixelWidth_ = spec_.vpWidth / spec_.nX;
+  c.pixelHeight_ = spec_.vpHeight / spec_.nY;
+  c.focal_ = spec_.focalDistance > 0 ? spec_.focalDistance : spec_.vpDistance;
   c.rayTracer_ = rayTracer_;
   c.imageWriter_ = imageWriter_;
-  c.image_ = Image(*nX_, *nY_);
+  c.pixelSampler_ = pixelSampler_ ? pixelSampler_ : std::make_shared<CenterSampler>();
+  c.image_ = Image(spec_.nX, spec_.nY);
   return c;
 }
 

@@ -2,10 +2,18 @@
 
 namespace rt {
 
+Color RayTracer::traceRay(const Ray& ray) const {
+  RayCounts uncounted;
+  SampleContext ctx(0, 0, 0, 0, uncounted);
+  return traceRay(ray, ctx);
+}
+
 // The course's SimpleRayTracer: only whether the ray hits something matters, so the closest-hit
 // query is enough (and it allocates nothing).
-Color AmbientTracer::traceRay(const Ray& ray) const {
-  return intersector_.closestHit(ray) ? scene_.ambientLight.intensity() : scene_.background;
+Color AmbientTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
+  return intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries)
+             ? scene_.ambientLight.intensity()
+             : scene_.background;
 }
 
 }  // namespace rt

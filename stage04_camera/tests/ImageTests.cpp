@@ -275,7 +275,6 @@ TEST(CameraImageTests, MissingTracerOrWriter) {
   // TC01: renderImage without a tracer names rayTracer
   Camera camera = emptyView(2, 2).build();
   expectThrowWith<std::logic_error>([&] { camera.renderImage(); }, "'rayTracer'");
-  expectThrowWith<std::logic_error>([&] { camera.renderBlock({0, 0, 1, 1}); }, "'rayTracer'");
   // TC02: writeToImage without a writer names imageWriter, and writes nothing
   const fs::path dir = testDir("missing-writer");
   const std::string path = (dir / "x.png").string();
@@ -287,7 +286,8 @@ TEST(CameraImageTests, MissingTracerOrWriter) {
 class StoppingTracer final : public RayTracer {
  public:
   StoppingTracer(const Scene& scene, std::atomic<bool>& stop) : RayTracer(scene), stop_(stop) {}
-  Color traceRay(const Ray&) const override {
+  using RayTracer::traceRay;
+  Color traceRay(const Ray&, SampleContext&) const override {
     ++calls;
     stop_ = true;
     return Color::WHITE;
@@ -320,28 +320,6 @@ TEST(CameraImageTests, StopFlag) {
   Camera full = emptyView(3, 2).setRayTracer(all).build();
   full.renderImage();
   EXPECT_EQ(all->calls.load(), 6);
-}
-
-TEST(CameraImageTests, RenderBlockBounds) {
-  Scene scene;
-  scene.background = Color::BLUE;
-  Camera camera = emptyView(4, 4).setRayTracer(std::make_shared<AmbientTracer>(scene)).build();
-  // TC01: a 2x2 tile renders exactly its pixels
-  camera.renderBlock({1, 2, 3, 4});
-  EXPECT_EQ(camera.image().pixel(1, 2), Color::BLUE);
-  EXPECT_EQ(camera.image().pixel(2, 3), Color::BLUE);
-  EXPECT_EQ(camera.image().pixel(0, 2), Color::BLACK);
-  EXPECT_EQ(camera.image().pixel(3, 3), Color::BLACK);
-  EXPECT_EQ(camera.image().pixel(1, 1), Color::BLACK);
-  // TC11: empty block
-  EXPECT_THROW(camera.renderBlock({1, 1, 1, 3}), std::invalid_argument);
-  // TC12: past the right edge
-  expectThrowWith<std::invalid_argument>([&] { camera.renderBlock({0, 0, 5, 1}); }, "4x4 image");
-  // TC13: negative start
-  EXPECT_THROW(camera.renderBlock({0, -1, 1, 1}), std::invalid_argument);
-  // TC14: the whole image is one valid block
-  EXPECT_NO_THROW(camera.renderBlock({0, 0, 4, 4}));
-  EXPECT_EQ(camera.image().pixel(3, 3), Color::BLUE);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "camera/Camera.h"
 #include "camera/CourseScenes.h"
 #include "geometries/Sphere.h"
 #include "geometries/Triangle.h"
@@ -91,10 +92,10 @@ SceneSetup<LitScene> renderMultiColor() {
   s.scene.name = "color render test";
   s.scene.background = Color::BLACK;
   s.scene.ambientLight = AmbientLight(Color::WHITE, Double3(0.2, 0.2, 0.2));
-  // Geometry 0 is the sphere, which keeps the default appearance.
-  s.scene.appearances[1].emission = Color::GREEN;  // up left
-  s.scene.appearances[2].emission = Color::RED;    // down left
-  s.scene.appearances[3].emission = Color::BLUE;   // down right
+  // Geometry 0 is the sphere, which keeps the default appearance (row 0).
+  s.scene.appearanceIndex[1] = s.scene.addAppearance(Color::GREEN);  // up left
+  s.scene.appearanceIndex[2] = s.scene.addAppearance(Color::RED);    // down left
+  s.scene.appearanceIndex[3] = s.scene.addAppearance(Color::BLUE);   // down right
   return s;
 }
 
@@ -239,10 +240,11 @@ void checkSceneTable(std::span<const CourseScene> table) {
       throwBadEntry(i, entry.name, std::string("its make function throws: ") + e.what());
     }
     if (setup.scene.name.empty()) throwBadEntry(i, entry.name, "its scene has no name");
-    if (setup.scene.appearances.size() != setup.scene.geometries.size())
-      throwBadEntry(i, entry.name,
-                    std::to_string(setup.scene.geometries.size()) + " geometries but " +
-                        std::to_string(setup.scene.appearances.size()) + " appearances");
+    try {
+      setup.scene.validate();
+    } catch (const std::exception& e) {
+      throwBadEntry(i, entry.name, std::string("its scene does not hold together: ") + e.what());
+    }
     try {
       (void)setup.camera.builder().build();
     } catch (const std::exception& e) {

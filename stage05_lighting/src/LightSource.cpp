@@ -6,16 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "primitives/Checks.h"
+#include "primitives/Overloaded.h"
+
 namespace rt {
 
 namespace {
-
-template <typename... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <typename... F>
-Overloaded(F...) -> Overloaded<F...>;
 
 /// The point light's part, shared by the spot light: l = normalize(p - position),
 /// I = I0 / (kC + kL·d + kQ·d²). nullopt when p is the light's position (l undefined there).
@@ -27,7 +23,10 @@ std::optional<LightSample> pointSample(const PointLight& light, const Point& p) 
   const double d = std::sqrt(d2);
   const double attenuation = light.kC + light.kL * d + light.kQ * d2;
   // Multiplying by the reciprocal keeps a (theoretical) infinite attenuation harmless: 1/inf = 0.
-  return LightSample{light.intensity * (1.0 / attenuation), Vector(toPoint / d), d};
+  // Neither factor can throw here: attenuation >= kC > 0 (validated with the light), and
+  // toPoint / d has length 1.
+  return LightSample{light.intensity.scaledUnchecked(1.0 / attenuation),
+                     Vector::unchecked(toPoint / d), d};
 }
 
 [[noreturn]] void fail(const char* light, const char* field, const std::string& requirement,
@@ -36,18 +35,10 @@ std::optional<LightSample> pointSample(const PointLight& light, const Point& p) 
                               ", got " + formatNumber(value));
 }
 
-void requireFinitePoint(const char* light, const char* field, const Double3& xyz) {
-  if (!xyz.isFinite()) {
-    throw std::invalid_argument(std::string(light) + ": " + field + " must be finite, got " +
-                                xyz.str());
-  }
-}
-
 void validateAttenuation(const char* name, const PointLight& light) {
-  requireFinitePoint(name, "position", light.position.xyz());
+  requireFinite(light.position.xyz(), name, "position");
   // kC is the attenuation at distance 0: it must be positive or the intensity is infinite there.
-  if (!(std::isfinite(light.kC) && light.kC > 0))
-    fail(name, "kC", "a positive finite number", light.kC);
+  requirePositive(light.kC, name, "kC");
   if (!(std::isfinite(light.kL) && light.kL >= 0))
     fail(name, "kL", "a non-negative finite number", light.kL);
   if (!(std::isfinite(light.kQ) && light.kQ >= 0))
@@ -70,7 +61,7 @@ std::optional<LightSample> illuminate(const LightSource& light, const Point& p) 
             // (negative)^narrowBeam.
             const double cosine = std::max(0.0, l.direction.dot(s->l));
             const double factor = l.narrowBeam == 1 ? cosine : std::pow(cosine, l.narrowBeam);
-            s->intensity = s->intensity * factor;
+            s->intensity = s->intensity.scaledUnchecked(factor);  // factor in [0, 1]
             return s;
           },
       },
@@ -80,12 +71,12 @@ std::optional<LightSample> illuminate(const LightSource& light, const Point& p) 
 void validate(const LightSource& light) {
   std::visit(Overloaded{
                  [](const DirectionalLight& l) {
-                   requireFinitePoint("DirectionalLight", "direction", l.direction.xyz());
+                   requireFinite(l.direction.xyz(), "DirectionalLight", "direction");
                  },
                  [](const PointLight& l) { validateAttenuation("PointLight", l); },
                  [](const SpotLight& l) {
                    validateAttenuation("SpotLight", l);
-                   requireFinitePoint("SpotLight", "direction", l.direction.xyz());
+                   requireFinite(l.direction.xyz(), "SpotLight", "direction");
                    if (!(std::isfinite(l.narrowBeam) && l.narrowBeam >= 0))
                      fail("SpotLight", "narrowBeam", "a non-negative finite number", l.narrowBeam);
                  },

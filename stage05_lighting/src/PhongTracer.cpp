@@ -15,31 +15,9 @@ bool isExactlyZero(const Double3& k) { return k.x == 0 && k.y == 0 && k.z == 0; 
 
 PhongTracer::PhongTracer(const LitScene& scene, const Intersectable* accelerator)
     : RayTracer(scene, accelerator), litScene_(scene) {
-  if (scene.appearances.size() != scene.geometries.size()) {
-    throw std::logic_error(
-        "PhongTracer: scene.appearances has " + std::to_string(scene.appearances.size()) +
-        " entries but scene.geometries has " + std::to_string(scene.geometries.size()) +
-        " shapes; every shape needs one Appearance (use LitScene::add)");
-  }
   // Everything the per-ray code relies on is checked here, once, so that shading never throws:
-  // the lists are public and may have been filled without LitScene::add / addLight.
-  for (std::size_t i = 0; i < scene.appearances.size(); ++i) {
-    try {
-      scene.appearances[i].material.validate();
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("PhongTracer: scene.appearances[" + std::to_string(i) +
-                                  "]: " + e.what());
-    }
-  }
-  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
-    try {
-      validate(scene.lights[i]);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("PhongTracer: scene.lights[" + std::to_string(i) +
-                                  "]: " + e.what());
-    }
-  }
-
+  // the lists are public and may have been filled without LitScene's add functions.
+  scene.validate();
   terms_.reserve(scene.appearances.size());
   for (const Appearance& a : scene.appearances) {
     std::uint8_t t = NONE;
@@ -49,52 +27,57 @@ PhongTracer::PhongTracer(const LitScene& scene, const Intersectable* accelerator
   }
 }
 
-Color PhongTracer::traceRay(const Ray& ray) const {
-  const std::optional<Hit> hit = intersector_.closestHit(ray);
+Color PhongTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
+  const std::optional<Hit> hit =
+      intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries);
   if (!hit) return litScene_.background;
   // Course year 5784: the ambient light's Ia·kA, once per primary hit (not per light, not per
   // recursion level).
-  return litScene_.ambientLight.intensity() + localEffects(makeContext(*hit, ray), Double3::ONE);
+  return litScene_.ambientLight.intensity() +
+         localEffects(makeContext(*hit, ray), Double3::ONE, ctx);
 }
 
-PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray) const {
+PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray) const noexcept {
   const Point p = ray.point(hit.t);
-  const Vector n = normalAt(litScene_.geometries[hit.geometry], p);
   const Vector& v = ray.direction();
-  return HitContext{
-      hit.geometry, p, n, v, alignZero(n.dot(v)), &litScene_.appearances[hit.geometry]};
+  const Vector n = hitNormal(litScene_.geometries[hit.geometry], p, -v);
+  const std::uint32_t row = litScene_.appearanceIndex[hit.geometry];
+  return HitContext{hit.geometry, p, n, v, alignZero(n.dot(v)), row, &litScene_.appearances[row]};
 }
 
 /*
  * Phong at the hit point P, for every light L (unit vectors, l from the light to P, v from the
  * eye to P, n the outward normal):
  *
- *   colour = emission + Σ_L  I_L(P) · ktr_L · ( kD·|n·l|  +  kS·max(0, −v·r)^nSh ),
- *   r = l − 2(l·n)n   (l mirrored about the surface).
+ *   colour = emission + Σ_L  I_L(P) · T_L · ( kD·|n·l|  +  kS·max(0, −v·r)^nSh ),
+ *   r = l − 2(l·n)n   (l mirrored about the surface),
+ *
+ * T_L the transmittance towards L (the course's ktr): (1,1,1) here, the shadow ray's from stage 6.
  *
  * A light counts only when it is on the viewer's side of the surface: (n·l)(n·v) > 0, both dot
  * products passed through alignZero so rounding noise never decides a side. A grazing view
  * (n·v == 0) sees the emission only.
  */
-Color PhongTracer::localEffects(const HitContext& h, const Double3& k) const {
+Color PhongTracer::localEffects(const HitContext& h, const Double3& k, SampleContext& ctx) const {
   Color color = h.appearance->emission;
   const double nv = h.nv;
   if (nv == 0) return color;
-  const std::uint8_t terms = terms_[h.geometry];
+  const std::uint8_t terms = terms_[h.appearanceRow];
   if (terms == NONE) return color;
 
   const Material& m = h.appearance->material;
   const Double3& n = h.normal.xyz();
   const Double3& v = h.v.xyz();
-  for (const LightSource& light : litScene_.lights) {
-    const std::optional<LightSample> sample = illuminate(light, h.point);
+  const auto lightCount = static_cast<std::uint32_t>(litScene_.lights.size());
+  for (std::uint32_t light = 0; light < lightCount; ++light) {
+    const std::optional<LightSample> sample = illuminate(litScene_.lights[light], h.point);
     if (!sample) continue;  // P is the light's own position: no direction to shade with
     const double ln = sample->l.xyz().dot(n);
     const double nl = alignZero(ln);
     if (nl * nv <= 0) continue;  // the light is on the other side of the surface
 
-    const Double3 ktr = transparency(h, *sample, k);
-    if ((ktr * k).lowerThan(MIN_CALC_COLOR_K)) continue;
+    const Double3 transmitted = transmittance(h, light, *sample, k, ctx);
+    if ((transmitted * k).lowerThan(MIN_CALC_COLOR_K)) continue;
 
     Double3 factor;  // kD·|n·l| + kS·max(0, −v·r)^nSh
     if (terms & DIFFUSE) factor = m.kD * std::abs(nl);
@@ -104,12 +87,14 @@ Color PhongTracer::localEffects(const HitContext& h, const Double3& k) const {
       // As the course: no highlight unless −v·r > 0 (also when nSh = 0, where pow would give 1).
       if (minusVR > 0) factor = factor + m.kS * std::pow(minusVR, m.shininess);
     }
-    color += sample->intensity * ktr * factor;
+    // Products of validated coefficients: finite and non-negative, no check needed per ray.
+    color += sample->intensity.scaledUnchecked(transmitted).scaledUnchecked(factor);
   }
   return color;
 }
 
-Double3 PhongTracer::transparency(const HitContext&, const LightSample&, const Double3&) const {
+Double3 PhongTracer::transmittance(const HitContext&, std::uint32_t, const LightSample&,
+                                   const Double3&, SampleContext&) const {
   return Double3::ONE;
 }
 

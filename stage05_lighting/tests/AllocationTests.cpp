@@ -1,29 +1,20 @@
-// Stage 5: the per-ray path allocates nothing. This file replaces the global operator new of the
-// stage-5 test program with one that counts (and otherwise behaves as usual); the tests count
-// the allocations made while the tracer shades every pixel of every built-in scene of the stage.
+// Stage 5: the per-ray path allocates nothing. The stage-5 test program links the allocation
+// counter (stage01's tests/support), which counts every call of the global operator new; the
+// tests count the allocations made while the tracer shades every pixel of every built-in scene
+// of the stage.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
+#include "camera/Camera.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/LightSource.h"
 #include "lighting/PhongTracer.h"
+#include "support/AllocationCounter.h"
 
 namespace {
-std::atomic<long> allocations{0};
 std::vector<int>* volatile sink = nullptr;  // keeps the probe allocation from being elided
 }  // namespace
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace rt {
 namespace {
@@ -44,9 +35,9 @@ TEST(AllocationTests, traceRayAllocatesNothing) {
       for (int j = 0; j < 41; ++j) rays.push_back(camera.constructRay(41, 41, j, i));
 
     double sum = 0;  // used, so that the calls cannot be optimised away
-    const long before = allocations.load();
-    for (const Ray& ray : rays) sum += tracer.traceRay(ray).r();
-    const long during = allocations.load() - before;
+    const long during = testing::allocationsDuring([&] {
+      for (const Ray& ray : rays) sum += tracer.traceRay(ray).r();
+    });
     EXPECT_EQ(during, 0) << cs.name;
     EXPECT_GE(sum, 0) << cs.name;
   }
@@ -54,18 +45,17 @@ TEST(AllocationTests, traceRayAllocatesNothing) {
   // =============== Boundary Values Tests ==================
   // TC11: illuminate at the light's own position (the no-sample case) allocates nothing either
   const LightSource spot = SpotLight(Color::WHITE, Point::ZERO, Vector(0, 0, -1)).setNarrowBeam(3);
-  const long before = allocations.load();
-  const bool none = !illuminate(spot, Point::ZERO).has_value();
-  const bool some = illuminate(spot, Point(0, 0, -1)).has_value();
-  EXPECT_EQ(allocations.load() - before, 0);
+  bool none = false, some = false;
+  EXPECT_EQ(0, testing::allocationsDuring([&] {
+              none = !illuminate(spot, Point::ZERO).has_value();
+              some = illuminate(spot, Point(0, 0, -1)).has_value();
+            }));
   EXPECT_TRUE(none && some);
 }
 
 TEST(AllocationTests, counterWorks) {
   // TC01: the counter sees a heap allocation (otherwise the test above could not fail)
-  const long before = allocations.load();
-  sink = new std::vector<int>(100);
-  EXPECT_GE(allocations.load() - before, 2);
+  EXPECT_GE(testing::allocationsDuring([] { sink = new std::vector<int>(100); }), 2);
   delete sink;
 }
 

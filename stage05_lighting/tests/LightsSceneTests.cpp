@@ -37,6 +37,7 @@
 
 #include "ReferencePhong.h"
 #include "TestSupport.h"
+#include "camera/Camera.h"
 #include "camera/ImageWriter.h"
 #include "geometries/Sphere.h"
 #include "lighting/CourseScenes.h"
@@ -500,7 +501,7 @@ TEST(CourseScenesTests, checkSceneTable) {
               AllOf(HasSubstr("'unnamed'"), HasSubstr("no name")));
   // TC06: more geometries than appearances: both sizes
   EXPECT_THAT(tableError({{"misaligned", "one shape without appearance", &misalignedScene}}),
-              AllOf(HasSubstr("'misaligned'"), HasSubstr("2 geometries but 1 appearances")));
+              AllOf(HasSubstr("'misaligned'"), HasSubstr("2 geometries but 1 appearance indices")));
   // TC07: a camera that does not build: the builder's own message too
   EXPECT_THAT(tableError({{"no-camera", "a default camera spec", &noCameraScene}}),
               AllOf(HasSubstr("'no-camera'"), HasSubstr("camera"), HasSubstr("width")));

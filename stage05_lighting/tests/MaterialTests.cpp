@@ -2,6 +2,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -115,14 +118,55 @@ TEST(LitSceneTests, addKeepsAppearancesAligned) {
   EXPECT_EQ(scene.geometries.size(), 2u);
 
   // =============== Boundary Values Tests ==================
-  // TC11: a stage-4 scene becomes a lit one with one default appearance per shape
+  // TC11: a stage-4 scene becomes a lit one whose shapes share one default appearance
   Scene plain;
   plain.geometries.add(Sphere(Point(0, 0, -5), 1));
   plain.geometries.add(Sphere(Point(0, 0, -9), 2));
   const LitScene lit(plain);
-  EXPECT_EQ(lit.appearances.size(), 2u);
+  EXPECT_EQ(lit.appearances.size(), 1u);
+  EXPECT_EQ(lit.appearanceIndex, (std::vector<std::uint32_t>{0, 0}));
   EXPECT_EQ(lit.geometries.size(), 2u);
   EXPECT_TRUE(lit.lights.empty());
+  EXPECT_NO_THROW(lit.validate());
+}
+
+TEST(LitSceneTests, sharedAppearances) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: many shapes of one look share one row: 1000 spheres, 2 rows
+  LitScene scene;
+  Material m;
+  m.kD = Double3(0.2);
+  const std::uint32_t blue = scene.addAppearance(Color(80, 255, 230), m);
+  const std::uint32_t white = scene.addAppearance(Color(200, 250, 255), m);
+  for (int i = 0; i < 1000; ++i)
+    EXPECT_EQ(static_cast<std::uint32_t>(i),
+              scene.add(Sphere(Point(i, 0, -5), 0.05), i % 2 ? white : blue));
+  EXPECT_EQ(2u, scene.appearances.size());
+  EXPECT_EQ(1000u, scene.appearanceIndex.size());
+  EXPECT_EQ(Color(200, 250, 255), scene.appearanceOf(999).emission);
+  EXPECT_EQ(Color(80, 255, 230), scene.appearanceOf(998).emission);
+  EXPECT_EQ(&scene.appearanceOf(0), &scene.appearanceOf(2));
+  // TC02: a change to a shared row changes every shape that uses it
+  scene.appearances[blue].material.kS = Double3(0.33);
+  EXPECT_EQ(Double3(0.33), scene.appearanceOf(500).material.kS);
+  EXPECT_EQ(Double3::ZERO, scene.appearanceOf(501).material.kS);
+  // =============== Boundary Values Tests ==================
+  // TC11: the last row is a valid row; one past it is refused, naming the row and the table,
+  // and nothing is added
+  EXPECT_EQ(1000u, scene.add(Sphere(Point(0, 1, -5), 1), white));
+  try {
+    scene.add(Sphere(Point(0, 2, -5), 1), 2);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::out_of_range& e) {
+    EXPECT_STREQ("LitScene::add: appearance 2 does not exist (the table has 2 rows)", e.what());
+  }
+  EXPECT_EQ(1001u, scene.geometries.size());
+  EXPECT_EQ(1001u, scene.appearanceIndex.size());
+  // TC12: an invalid material is refused by addAppearance, and no row is added
+  Material bad;
+  bad.kT = Double3(-0.1);
+  EXPECT_THROW(scene.addAppearance(Color::BLACK, bad), std::invalid_argument);
+  EXPECT_EQ(2u, scene.appearances.size());
 }
 
 }  // namespace

@@ -40,20 +40,23 @@ class ExposedPhong : public PhongTracer {
   using PhongTracer::localEffects;
   using PhongTracer::makeContext;
   using PhongTracer::PhongTracer;
-  using PhongTracer::transparency;
+  using PhongTracer::transmittance;
 };
 
-/// A tracer whose lights reach the surface through a fixed per-channel transparency, the way
+/// A tracer whose lights reach the surface through a fixed per-channel transmittance, the way
 /// stage 6 plugs in its shadow rays; it records what it was asked.
-class FixedTransparencyTracer : public ExposedPhong {
+class FixedTransmittanceTracer : public ExposedPhong {
  public:
-  FixedTransparencyTracer(const LitScene& scene, const Double3& t) : ExposedPhong(scene), t_(t) {}
-  Double3 transparency(const HitContext&, const LightSample& light, const Double3&) const override {
+  FixedTransmittanceTracer(const LitScene& scene, const Double3& t) : ExposedPhong(scene), t_(t) {}
+  Double3 transmittance(const HitContext&, std::uint32_t light, const LightSample& sample,
+                        const Double3&, SampleContext&) const override {
     ++calls;
-    lastDistance = light.distance;
+    lastLight = light;
+    lastDistance = sample.distance;
     return t_;
   }
   mutable int calls = 0;
+  mutable std::uint32_t lastLight = 99;
   mutable double lastDistance = 0;
 
  private:
@@ -214,8 +217,9 @@ TEST(PhongTracerTests, sameSideRule) {
   // TC12: n·v = 0 (a view along the surface): only the emission, whatever the lights
   const ExposedPhong tracer(front);
   const ExposedPhong::HitContext grazingView{
-      0, Point(0, 0, -10), Vector(0, 0, 1), Vector(0, 1, 0), 0.0, &front.appearances[0]};
-  EXPECT_TRUE(colorNear(tracer.localEffects(grazingView, Double3::ONE), 10, 20, 30));
+      0, Point(0, 0, -10), Vector(0, 0, 1), Vector(0, 1, 0), 0.0, 0, &front.appearances[0]};
+  test::TestSample sample;
+  EXPECT_TRUE(colorNear(tracer.localEffects(grazingView, Double3::ONE, sample.ctx), 10, 20, 30));
 }
 
 TEST(PhongTracerTests, ambientAndEmission) {
@@ -252,37 +256,39 @@ TEST(PhongTracerTests, ambientAndEmission) {
   EXPECT_TRUE(colorNear(PhongTracer(empty).traceRay(EYE_RAY), 7, 8, 9));
 }
 
-TEST(PhongTracerTests, transparencySeam) {
+TEST(PhongTracerTests, transmittanceSeam) {
   LitScene scene = planeScene(diffuse());
   scene.addLight(frontLight());
+  test::TestSample ts;
   // ============ Equivalence Partitions Tests ==============
-  // TC01: this stage's transparency is (1,1,1)
+  // TC01: this stage's transmittance is (1,1,1)
   const ExposedPhong plain(scene);
   const auto h = plain.makeContext(Hit{10, 0}, EYE_RAY);
   const LightSample sample = *illuminate(scene.lights[0], h.point);
-  EXPECT_EQ(plain.transparency(h, sample, Double3::ONE), Double3::ONE);
-  // TC02: a derived tracer's transparency scales each light per channel:
-  // (20,20,120)·(0.5,0.25,1) = (10,5,120); it is asked once, with the light's distance 5
-  const FixedTransparencyTracer half(scene, Double3(0.5, 0.25, 1));
+  EXPECT_EQ(plain.transmittance(h, 0, sample, Double3::ONE, ts.ctx), Double3::ONE);
+  // TC02: a derived tracer's transmittance scales each light per channel:
+  // (20,20,120)·(0.5,0.25,1) = (10,5,120); it is asked once, for light 0 at distance 5
+  const FixedTransmittanceTracer half(scene, Double3(0.5, 0.25, 1));
   EXPECT_TRUE(colorNear(half.traceRay(EYE_RAY), 10, 5, 120));
   EXPECT_EQ(half.calls, 1);
+  EXPECT_EQ(half.lastLight, 0u);
   EXPECT_NEAR(half.lastDistance, 5, EPS);
   // TC03: the path weight k only decides whether a light is worth it; it does not scale the
   // local colour (the recursive caller does): k = (0.5,0.5,0.5) still gives (20,20,120)
-  EXPECT_TRUE(colorNear(plain.localEffects(h, Double3(0.5)), 20, 20, 120));
+  EXPECT_TRUE(colorNear(plain.localEffects(h, Double3(0.5), ts.ctx), 20, 20, 120));
 
   // =============== Boundary Values Tests ==================
-  // TC11: ktr·k below MIN_CALC_COLOR_K = 0.001 in every channel: the light is skipped (black),
-  // where scaling would have given (0.018,0.018,0.108)
-  const FixedTransparencyTracer opaque(scene, Double3(0.0009));
+  // TC11: transmittance·k below MIN_CALC_COLOR_K = 0.001 in every channel: the light is skipped
+  // (black), where scaling would have given (0.018,0.018,0.108)
+  const FixedTransmittanceTracer opaque(scene, Double3(0.0009));
   EXPECT_TRUE(colorNear(opaque.traceRay(EYE_RAY), 0, 0, 0));
   // TC12: one channel at 0.002 keeps the light (the course's lowerThan needs all three below):
   // (20,20,120)·(0.0009,0.0009,0.002) = (0.018,0.018,0.24)
-  const FixedTransparencyTracer tinted(scene, Double3(0.0009, 0.0009, 0.002));
+  const FixedTransmittanceTracer tinted(scene, Double3(0.0009, 0.0009, 0.002));
   EXPECT_TRUE(colorNear(tinted.traceRay(EYE_RAY), 0.018, 0.018, 0.24));
-  // TC13: the same transparency 0.5 with a path weight k = 0.001: 0.0005 < 0.001, skipped
-  const FixedTransparencyTracer halfAgain(scene, Double3(0.5));
-  EXPECT_TRUE(colorNear(halfAgain.localEffects(h, Double3(0.001)), 0, 0, 0));
+  // TC13: the same transmittance 0.5 with a path weight k = 0.001: 0.0005 < 0.001, skipped
+  const FixedTransmittanceTracer halfAgain(scene, Double3(0.5));
+  EXPECT_TRUE(colorNear(halfAgain.localEffects(h, Double3(0.001), ts.ctx), 0, 0, 0));
 }
 
 TEST(PhongTracerTests, makeContext) {
@@ -301,7 +307,8 @@ TEST(PhongTracerTests, makeContext) {
   EXPECT_TRUE(tripleNear(h.normal.xyz(), Double3(0, 0, 1)));
   EXPECT_TRUE(tripleNear(h.v.xyz(), Double3(0, 0, -1)));
   EXPECT_NEAR(h.nv, -1, EPS);
-  EXPECT_EQ(h.appearance, &scene.appearances[1]);
+  EXPECT_EQ(h.appearance, &scene.appearanceOf(1));
+  EXPECT_EQ(h.appearanceRow, 1u);
 
   // =============== Boundary Values Tests ==================
   // TC11: a ray from inside the sphere sees its inside: the outward normal, n·v = +1
@@ -324,27 +331,40 @@ TEST(PhongTracerTests, constructorChecks) {
   mismatched.add(Sphere(Point(0, 0, -5), 1));
   mismatched.geometries.add(Sphere(Point(0, 0, -9), 1));
   EXPECT_THAT(thrownMessage<std::logic_error>([&] { PhongTracer tracer(mismatched); }),
-              AllOf(HasSubstr("appearances has 1"), HasSubstr("geometries has 2")));
+              HasSubstr("2 geometries but 1 appearance indices"));
   // TC03: an invalid light pushed straight into the list is caught here, naming its index
   LitScene badLight = planeScene(diffuse());
   badLight.lights.push_back(PointLight(Color::WHITE, Point::ZERO).setKc(0));
   EXPECT_THAT(invalidArgumentMessage([&] { PhongTracer tracer(badLight); }),
               AllOf(HasSubstr("lights[0]"), HasSubstr("kC")));
-  // TC04: an invalid material pushed straight into the list, naming its index and field
+  // TC04: an invalid material pushed straight into the table, naming its row and field
   LitScene badMaterial = planeScene(diffuse());
-  badMaterial.geometries.add(Sphere(Point(0, 0, -5), 1));
   badMaterial.appearances.push_back({});
   badMaterial.appearances.back().material.kS = Double3(-1);
+  badMaterial.geometries.add(Sphere(Point(0, 0, -5), 1));
+  badMaterial.appearanceIndex.push_back(1);
   EXPECT_THAT(invalidArgumentMessage([&] { PhongTracer tracer(badMaterial); }),
               AllOf(HasSubstr("appearances[1]"), HasSubstr("kS")));
+  // TC05: a shape whose row does not exist: the shape, its row and the table's size
+  LitScene badRow = planeScene(diffuse());
+  badRow.appearanceIndex[0] = 3;
+  EXPECT_THAT(thrownMessage<std::logic_error>([&] { PhongTracer tracer(badRow); }),
+              HasSubstr("geometry 0 uses appearance 3 but the table has 1 rows"));
 
   // =============== Boundary Values Tests ==================
   // TC11: an empty scene is accepted (0 == 0)
   EXPECT_NO_THROW(PhongTracer{LitScene{}});
-  // TC12: appearances without shapes: 1 vs 0
+  // TC12: rows without shapes are fine (a table may hold looks no shape uses yet)
   LitScene extra;
   extra.appearances.push_back({});
-  EXPECT_THROW(PhongTracer{extra}, std::logic_error);
+  EXPECT_NO_THROW(PhongTracer{extra});
+  // TC13: the last row is a valid index, one past it is not
+  LitScene edge = planeScene(diffuse());
+  edge.appearances.push_back({});
+  edge.appearanceIndex[0] = 1;
+  EXPECT_NO_THROW(PhongTracer{edge});
+  edge.appearanceIndex[0] = 2;
+  EXPECT_THROW(PhongTracer{edge}, std::logic_error);
 }
 
 TEST(PhongTracerTests, accelerator) {

@@ -12,6 +12,7 @@
 #include "camera/Camera.h"
 #include "camera/CameraSpec.h"
 #include "camera/Image.h"
+#include "camera/SampleContext.h"
 #include "lighting/LitScene.h"
 #include "lighting/PhongTracer.h"
 #include "primitives/Color.h"
@@ -62,6 +63,13 @@ template <typename F>
 std::string invalidArgumentMessage(F&& f) {
   return thrownMessage<std::invalid_argument>(std::forward<F>(f));
 }
+
+/// A sample context for calling a tracer's protected steps directly: pixel (0, 0), sample 0,
+/// seed 0, with its own counts.
+struct TestSample {
+  RayCounts counts;
+  SampleContext ctx{0, 0, 0, 0, counts};
+};
 
 /// A camera for spec (its resolution replaced by nX x nY when given), rendering with tracer.
 inline Camera makeCamera(const CameraSpec& spec, std::shared_ptr<const RayTracer> tracer,

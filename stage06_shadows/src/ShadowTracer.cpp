@@ -4,22 +4,29 @@ namespace rt {
 
 ShadowTracer::ShadowTracer(const LitScene& scene, const Intersectable* accelerator,
                            const RayOffset& offset)
-    : PhongTracer(scene, accelerator), offset_(offset) {}
+    : PhongTracer(scene, accelerator),
+      offset_(offset),
+      shadows_(intersector_, scene, MIN_CALC_COLOR_K) {}
 
-Transmittance ShadowTracer::shadowQuery(const Point& p, const Vector& n, const LightSample& light,
-                                        const Double3& k) const noexcept {
-  // l points from the light to p, so the shadow ray goes along −l.
-  const Vector toLight = -light.l;
+Transmittance ShadowTracer::shadowQuery(const Point& p, const Vector& n, const Vector& toLight,
+                                        double lightDistance, const Double3& k,
+                                        RayCounts& counts) const noexcept {
+  ++counts.shadow;
   const Ray shadowRay = offset_.ray(p, n, toLight);
-  const RayOffset::Range range = offset_.shadowRange(p, light.distance);
-  return transmittance(intersector_, litScene_.appearances, shadowRay, range.tMin, range.tMax, k,
-                       MIN_CALC_COLOR_K);
+  const RayOffset::Range range = offset_.shadowRange(p, lightDistance);
+  return shadows_(shadowRay, range.tMin, range.tMax, k, &counts.queries);
 }
 
-Double3 ShadowTracer::transparency(const HitContext& h, const LightSample& light,
-                                   const Double3& k) const {
-  const Double3 ktr = shadowQuery(h.point, h.normal, light, k).factor;
-  return (ktr * k).lowerThan(MIN_CALC_COLOR_K) ? Double3::ZERO : ktr;
+Transmittance ShadowTracer::shadowQuery(const Point& p, const Vector& n, const LightSample& light,
+                                        const Double3& k, RayCounts& counts) const noexcept {
+  // l points from the light to p, so the shadow ray goes along −l.
+  return shadowQuery(p, n, -light.l, light.distance, k, counts);
+}
+
+Double3 ShadowTracer::transmittance(const HitContext& h, std::uint32_t, const LightSample& sample,
+                                    const Double3& k, SampleContext& ctx) const {
+  // The query already cuts the light (ZERO) below MIN_CALC_COLOR_K, alone or times k.
+  return shadowQuery(h.point, h.normal, sample, k, ctx.counts).factor;
 }
 
 }  // namespace rt

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <optional>
+#include <vector>
 
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
@@ -35,8 +38,39 @@ const Ray up(Point::ZERO, Vector(0, 0, 1));
 
 Transmittance query(const LitScene& s, double tMin = 0, double tMax = 100,
                     const Double3& weight = Double3::ONE) {
-  return transmittance(s.geometries, s.appearances, up, tMin, tMax, weight, CUT_OFF);
+  return ShadowQuery(s.geometries, s, CUT_OFF)(up, tMin, tMax, weight);
 }
+
+/// The scene's shapes, reporting the hits of forEachHit in the reverse of the linear scan's
+/// order (the last shape first, each shape's crossings far to near): what an acceleration
+/// structure may do.
+class ReversedShapes final : public Intersectable {
+ public:
+  explicit ReversedShapes(const Geometries& g) : g_(g) {}
+  std::optional<Hit> closestHit(const Ray& ray, double tMax,
+                                QueryCounts* counts) const noexcept override {
+    return g_.closestHit(ray, tMax, counts);
+  }
+  bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
+                  QueryCounts* counts) const override {
+    std::vector<Hit> hits;
+    g_.forEachHit(
+        ray, tMax,
+        [&](const Hit& h) {
+          hits.push_back(h);
+          return true;
+        },
+        counts);
+    for (auto it = hits.rbegin(); it != hits.rend(); ++it)
+      if (!visit(*it)) return false;
+    return true;
+  }
+
+ private:
+  const Geometries& g_;
+};
+
+bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 TEST(ShadowQueryTests, blockers) {
   // ============ Equivalence Partitions Tests ==============
@@ -176,6 +210,77 @@ TEST(ShadowQueryTests, earlyStop) {
     EXPECT_EQ(4, t.crossings);
     EXPECT_TRUE(t.stoppedEarly);
   }
+}
+
+TEST(ShadowQueryTests, sameBitsInAnyOrder) {
+  // Three factors whose product depends on the order of multiplication in doubles:
+  // (0.7·0.9)·0.45 = 0.28350000000000003 and (0.45·0.9)·0.7 = 0.2835.
+  ASSERT_NE(0.7 * 0.9 * 0.45, 0.45 * 0.9 * 0.7);
+  LitScene s;
+  s.add(sheet(20), Color::BLACK, transparent(Double3(0.7)));
+  s.add(sheet(40), Color::BLACK, transparent(Double3(0.9)));
+  s.add(sheet(60), Color::BLACK, transparent(Double3(0.45)));
+  const ReversedShapes reversed(s.geometries);
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the linear scan and a walk in the reverse order give the same bits: the canonical
+  // order (shape index, t), i.e. (0.7·0.9)·0.45
+  const Transmittance forward = query(s);
+  const Transmittance backward = ShadowQuery(reversed, s, CUT_OFF)(up, 0, 100, Double3::ONE);
+  EXPECT_TRUE(sameBits(forward.factor, backward.factor));
+  EXPECT_EQ(0.7 * 0.9 * 0.45, forward.factor.x);
+  EXPECT_EQ(3, backward.crossings);
+  // TC02: a sphere crossed twice and a sheet, in both orders
+  LitScene t;
+  t.add(sheet(70), Color::BLACK, transparent(Double3(0.3, 0.6, 0.9)));
+  t.add(Sphere(Point(0, 0, 40), 10), Color::BLACK, transparent(Double3(0.7, 0.8, 0.9)));
+  const ReversedShapes reversedT(t.geometries);
+  EXPECT_TRUE(sameBits(query(t).factor,
+                       ShadowQuery(reversedT, t, CUT_OFF)(up, 0, 100, Double3::ONE).factor));
+  // =============== Boundary Values Tests ==================
+  // TC11: more crossings than the query keeps on the stack (20 > CAPACITY = 16): the product is
+  // still taken in the canonical order, found by repeated walks
+  LitScene many;
+  for (int i = 1; i <= 20; ++i)
+    many.add(sheet(4.0 * i), Color::BLACK,
+             transparent(Double3(0.99 - 0.002 * i, 0.98 - 0.001 * i, 0.97)));
+  const ReversedShapes reversedMany(many.geometries);
+  Double3 expected = Double3::ONE;
+  for (int i = 1; i <= 20; ++i)
+    expected = expected * Double3(0.99 - 0.002 * i, 0.98 - 0.001 * i, 0.97);
+  const Transmittance a = query(many);
+  const Transmittance b = ShadowQuery(reversedMany, many, CUT_OFF)(up, 0, 100, Double3::ONE);
+  EXPECT_TRUE(sameBits(expected, a.factor));
+  EXPECT_TRUE(sameBits(expected, b.factor));
+  EXPECT_EQ(20, b.crossings);
+  // TC12: the walks of the repeated search are counted: more shape tests than one walk's
+  QueryCounts one, repeated;
+  (void)ShadowQuery(many.geometries, s, 0)(Ray(Point(100, 100, 0), Vector(0, 0, 1)), 0, 100,
+                                           Double3::ONE, &one);
+  (void)ShadowQuery(many.geometries, many, CUT_OFF)(up, 0, 100, Double3::ONE, &repeated);
+  EXPECT_EQ(20u, one.shapeTests);
+  EXPECT_EQ(20u * 22u, repeated.shapeTests);  // the first walk, 20 searches, one that finds none
+}
+
+TEST(ShadowQueryTests, brighteningBlockersNeverStopEarly) {
+  // A kT above 1 (allowed: a coefficient is any non-negative number) could raise the product
+  // again, so no partial product may cut the light: only the final one decides.
+  LitScene s;
+  s.add(sheet(20), Color::BLACK, transparent(Double3(0.0005)));
+  s.add(sheet(40), Color::BLACK, transparent(Double3(4)));
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: 0.0005·4 = 0.002 is above the cut-off: the light passes, at 0.002
+  const Transmittance t = query(s);
+  EXPECT_FALSE(t.stoppedEarly);
+  EXPECT_EQ(2, t.crossings);
+  EXPECT_EQ(Double3(0.002), t.factor);
+  // =============== Boundary Values Tests ==================
+  // TC11: the same first sheet alone is below the cut-off: cut (after the whole walk)
+  LitScene dim;
+  dim.add(sheet(20), Color::BLACK, transparent(Double3(0.0005)));
+  dim.add(sheet(40), Color::BLACK, transparent(Double3(1.5)));
+  const Transmittance d = query(dim);
+  EXPECT_EQ(Double3::ZERO, d.factor);
+  EXPECT_FALSE(d.stoppedEarly);
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ struct Probe : ShadowTracer {
   using ShadowTracer::HitContext;
   using ShadowTracer::makeContext;
   using ShadowTracer::ShadowTracer;
-  using ShadowTracer::transparency;
+  using ShadowTracer::transmittance;
 };
 
 Material diffuse(double kD) {
@@ -154,24 +154,30 @@ TEST(ShadowTracerTests, traceRay) {
   }
 }
 
-TEST(ShadowTracerTests, transparencyWeightedByK) {
+TEST(ShadowTracerTests, transmittanceWeightedByK) {
   LitScene s = floorScene();
   s.add(blockerAt(50), Color::BLACK, transparent(0.5));
   const Probe tracer(s);
   const Ray primary(Point(-10, 0, 5), Vector(10, 0, -5));
   const Probe::HitContext h = tracer.makeContext(*s.geometries.closestHit(primary), primary);
   const LightSample light = *illuminate(s.lights[0], h.point);
+  RayCounts counts;
+  SampleContext ctx(0, 0, 0, 0, counts);
   // ============ Equivalence Partitions Tests ==============
   // TC01: path weight 1: the transmittance itself
-  EXPECT_EQ(Double3(0.5), tracer.transparency(h, light, Double3::ONE));
+  EXPECT_EQ(Double3(0.5), tracer.transmittance(h, 0, light, Double3::ONE, ctx));
   // TC02: path weight 0.001 (a deep secondary ray): 0.5·0.001 is below the cut-off: ZERO
-  EXPECT_EQ(Double3::ZERO, tracer.transparency(h, light, Double3(0.001)));
+  EXPECT_EQ(Double3::ZERO, tracer.transmittance(h, 0, light, Double3(0.001), ctx));
   // TC03: one channel of the weight keeps the light (course lowerThan: all three below)
-  EXPECT_EQ(Double3(0.5), tracer.transparency(h, light, Double3(0.001, 0.001, 0.01)));
+  EXPECT_EQ(Double3(0.5), tracer.transmittance(h, 0, light, Double3(0.001, 0.001, 0.01), ctx));
 
   // =============== Boundary Values Tests ==================
   // TC11: 0.5·0.002 = 0.001 is not below 0.001: kept
-  EXPECT_EQ(Double3(0.5), tracer.transparency(h, light, Double3(0.002)));
+  EXPECT_EQ(Double3(0.5), tracer.transmittance(h, 0, light, Double3(0.002), ctx));
+  // TC12: each call cast one shadow ray, counted with its queries (the floor and the blocker)
+  EXPECT_EQ(4u, counts.shadow);
+  EXPECT_EQ(8u, counts.queries.shapeTests);
+  EXPECT_EQ(0u, counts.primary + counts.secondary);
 }
 
 // The failure mode of the course's fixed DELTA = 0.1 at a small scale: a floor at z = 0 and an

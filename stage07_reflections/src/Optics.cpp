@@ -8,8 +8,8 @@ namespace rt {
 Vector reflect(const Vector& v, const Vector& n) noexcept {
   const Double3& vv = v.xyz();
   const Double3& nn = n.xyz();
-  // |r| = |v| = 1: never the zero vector, so the Vector constructor cannot throw.
-  return Vector(vv - nn * (2 * vv.dot(nn)));
+  // |r| = |v| = 1: never the zero vector, so the unchecked form is safe (per-ray code).
+  return Vector::unchecked(vv - nn * (2 * vv.dot(nn)));
 }
 
 double schlick(double cosTheta, double n1, double n2) noexcept {
@@ -33,8 +33,8 @@ Refraction refract(const Vector& v, const Vector& n, double ior) noexcept {
   // Schlick's cosine is the one on the side of the lower index.
   const double n1 = entering ? 1 : ior, n2 = entering ? ior : 1;
   const double cosSchlick = n1 <= n2 ? cosI : cosT;
-  // |t| = 1 for unit v and N (Snell's construction): never zero.
-  return {Vector(t).normalized(), schlick(cosSchlick, n1, n2), entering};
+  // |t| = 1 for unit v and N (Snell's construction): never zero, so the unchecked form is safe.
+  return {Vector::unchecked(t).normalized(), schlick(cosSchlick, n1, n2), entering};
 }
 
 }  // namespace rt

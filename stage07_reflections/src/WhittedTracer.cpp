@@ -26,19 +26,20 @@ WhittedTracer::WhittedTracer(const LitScene& scene, const Intersectable* acceler
   settings_.validate();
 }
 
-Color WhittedTracer::traceRay(const Ray& ray) const {
-  if (stats_ != nullptr) stats_->primaryRays.fetch_add(1, std::memory_order_relaxed);
-  const std::optional<Hit> hit = intersector_.closestHit(ray);
+Color WhittedTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
+  const std::optional<Hit> hit =
+      intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries);
   if (!hit) return litScene_.background;
   // The ambient light once, at the top (course 5784: Ia·kA), then the recursion from the top
   // level with the initial weight (1,1,1).
   return litScene_.ambientLight.intensity() +
-         calcColor(makeContext(*hit, ray), settings_.maxLevel, Double3::ONE);
+         calcColor(makeContext(*hit, ray), settings_.maxLevel, Double3::ONE, ctx);
 }
 
-Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k) const {
-  const Color local = localEffects(h, k);
-  return level == 1 ? local : local + globalEffects(h, level, k);
+Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k,
+                               SampleContext& ctx) const {
+  const Color local = localEffects(h, k, ctx);
+  return level == 1 ? local : local + globalEffects(h, level, k, ctx);
 }
 
 /*
@@ -56,39 +57,48 @@ Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k)
  * default material renders bit for bit as the course (R would not be 0 there: Schlick's R(θ)
  * grows towards grazing angles even when R0 = 0).
  */
-Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3& k) const {
+Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3& k,
+                                   SampleContext& ctx) const {
   const Material& m = h.appearance->material;
+  constexpr SecondaryKind REFRACTED = SecondaryKind::Refracted;
+  constexpr SecondaryKind REFLECTED = SecondaryKind::Reflected;
   if (m.ior == 1) {
-    return secondaryEffect(h, refractStraight(h.v), level, k, m.kT) +
-           secondaryEffect(h, reflect(h.v, h.normal), level, k, m.kR);
+    return secondaryEffect(h, refractStraight(h.v), REFRACTED, level, k, m.kT, ctx) +
+           secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR, ctx);
   }
   const Refraction refraction = refract(h.v, h.normal, m.ior);
   const double r = refraction.reflectance;
-  const Color refracted = refraction.direction
-                              ? secondaryEffect(h, *refraction.direction, level, k, m.kT * (1 - r))
-                              : Color::BLACK;
-  return refracted + secondaryEffect(h, reflect(h.v, h.normal), level, k, m.kR + m.kT * r);
+  const Color refracted =
+      refraction.direction
+          ? secondaryEffect(h, *refraction.direction, REFRACTED, level, k, m.kT * (1 - r), ctx)
+          : Color::BLACK;
+  return refracted +
+         secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR + m.kT * r, ctx);
 }
 
-Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, int level,
-                                     const Double3& k, const Double3& kx) const {
+Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, SecondaryKind kind,
+                                     int level, const Double3& k, const Double3& kx,
+                                     SampleContext& ctx) const {
   const Double3 kkx = k * kx;
   // The course's cut-off (all three channels below minK); a zero weight is never cast, also
   // when minK is 0.
   if (kkx.lowerThan(settings_.minK) || (kkx.x == 0 && kkx.y == 0 && kkx.z == 0)) {
     return Color::BLACK;
   }
-  return secondaryColor(h, offset_.ray(h.point, h.normal, dir), level, kkx) * kx;
+  // kx is a product of validated, non-negative coefficients: no check per ray.
+  return secondaryColor(h, offset_.ray(h.point, h.normal, dir), kind, level, kkx, ctx)
+      .scaledUnchecked(kx);
 }
 
-Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, int level,
-                                    const Double3& kkx) const {
-  if (stats_ != nullptr) stats_->secondaryRays.fetch_add(1, std::memory_order_relaxed);
-  const std::optional<Hit> hit = intersector_.closestHit(secondary);
+Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, SecondaryKind,
+                                    int level, const Double3& kkx, SampleContext& ctx) const {
+  ++ctx.counts.secondary;
+  const std::optional<Hit> hit =
+      intersector_.closestHit(secondary, INFINITE_DISTANCE, &ctx.counts.queries);
   // A miss sees the background; the caller weights it by kx (the course's 5785 fix: 5784
   // returned it unweighted).
   if (!hit) return litScene_.background;
-  return calcColor(makeContext(*hit, secondary), level - 1, kkx);
+  return calcColor(makeContext(*hit, secondary), level - 1, kkx, ctx);
 }
 
 }  // namespace rt

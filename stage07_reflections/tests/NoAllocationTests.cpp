@@ -5,36 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
 #include "camera/Camera.h"
 #include "reflections/CourseScenes.h"
-#include "reflections/TraceStats.h"
 #include "reflections/WhittedTracer.h"
 #include "shadows/ShadowTracer.h"
-
-namespace {
-std::atomic<long> allocations{0};
-}  // namespace
-
-// GCC takes free() in a replacement operator delete for a mismatch with operator new; here the
-// pair is malloc/free by construction.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-
-void* operator new(std::size_t size) {
-  allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return ::operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { ::operator delete(p); }
-void operator delete[](void* p, std::size_t) noexcept { ::operator delete(p); }
+#include "support/AllocationCounter.h"
 
 namespace rt {
 namespace {
@@ -46,28 +21,34 @@ long allocationsWhileTracing(const SceneSetup<LitScene>& s, const RayTracer& tra
   spec.nY = n;
   const Camera camera = spec.builder().build();
   double sink = 0;
-  const long before = allocations.load();
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) sink += tracer.traceRay(camera.constructRay(n, n, j, i)).r();
-  const long after = allocations.load();
+  const long allocations = testing::allocationsDuring([&] {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) sink += tracer.traceRay(camera.constructRay(n, n, j, i)).r();
+  });
   EXPECT_GT(sink, 0);
-  return after - before;
+  return allocations;
 }
 
 TEST(NoAllocationTests, whittedTracer) {
   // TC01: the counter works: one call counts one (a direct call cannot be elided, unlike a
   // new-expression)
-  const long before = allocations.load();
-  ::operator delete(::operator new(40));
-  EXPECT_EQ(1, allocations.load() - before);
-  // TC02: the all-features scene from both viewpoints: no allocation per ray
+  EXPECT_EQ(1, testing::allocationsDuring([] { ::operator delete(::operator new(40)); }));
+  // TC02: the all-features scene from both viewpoints, rendered block by block (sampler,
+  // context, tracer, counts): no allocation per ray
   for (auto make : {&course::allFeaturesBelow, &course::allFeaturesAbove}) {
     const SceneSetup<LitScene> s = make();
-    WhittedTracer tracer(s.scene);
-    TraceStats stats;
-    tracer.setStats(&stats);
+    const WhittedTracer tracer(s.scene);
     EXPECT_EQ(0, allocationsWhileTracing(s, tracer, 60));
-    EXPECT_GT(stats.secondaryRays.load(), 1000u);
+    CameraSpec spec = s.camera;
+    spec.nX = spec.nY = 60;
+    const Camera camera = spec.builder().build();
+    Image image(60, 60);
+    const CenterSampler sampler;
+    RayCounts counts;
+    EXPECT_EQ(0, testing::allocationsDuring([&] {
+                counts = renderBlock(camera, tracer, sampler, {0, 0, 60, 60}, image);
+              }));
+    EXPECT_GT(counts.secondary, 1000u);
   }
   // TC03: with an index of refraction (Snell, Fresnel): still none
   SceneSetup<LitScene> glass = course::twoSpheres();

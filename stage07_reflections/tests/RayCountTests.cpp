@@ -1,15 +1,15 @@
 // Depth limit and cut-off of the Whitted recursion, counted in the hall of mirrors: a primary ray
 // perpendicular to two parallel mirrors bounces between them until the level or the path weight
-// ends it. TraceStats counts the rays.
+// ends it. The sample context's RayCounts count the rays.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "camera/Camera.h"
 #include "primitives/Color.h"
 #include "reflections/CourseScenes.h"
-#include "reflections/TraceStats.h"
 #include "reflections/WhittedTracer.h"
 
 namespace rt {
@@ -31,11 +31,11 @@ SceneSetup<LitScene> hall(const Double3& kR) {
 std::uint64_t bounces(const Double3& kR, const WhittedSettings& settings) {
   const SceneSetup<LitScene> s = hall(kR);
   WhittedTracer tracer(s.scene, nullptr, settings);
-  TraceStats stats;
-  tracer.setStats(&stats);
-  tracer.traceRay(betweenMirrors);
-  EXPECT_EQ(1u, stats.primaryRays.load());
-  return stats.secondaryRays.load();
+  RayCounts counts;
+  SampleContext ctx(0, 0, 0, 0, counts);
+  tracer.traceRay(betweenMirrors, ctx);
+  EXPECT_EQ(0u, counts.primary);  // the caller (a pixel sampler) counts the primary ray
+  return counts.secondary;
 }
 
 TEST(RayCountTests, depthLimit) {
@@ -102,28 +102,30 @@ TEST(RayCountTests, colourOfTheRegress) {
   }
 }
 
-TEST(RayCountTests, renderCountsEveryPrimaryRay) {
+TEST(RayCountTests, renderCountsEveryRay) {
   // TC01: a 40x30 render of the hall casts 1200 primary rays, and secondary ones
   const SceneSetup<LitScene> s = course::hallOfMirrors();
-  WhittedTracer tracer(s.scene);
-  TraceStats stats;
-  tracer.setStats(&stats);
   CameraSpec spec = s.camera;
   spec.nX = 40;
   spec.nY = 30;
   spec.vpHeight = spec.vpWidth * 30 / 40;
-  Camera camera =
-      spec.builder()
-          .setRayTracer(std::shared_ptr<const RayTracer>(&tracer, [](const RayTracer*) {}))
-          .build();
+  Camera camera = spec.builder().setRayTracer(std::make_shared<WhittedTracer>(s.scene)).build();
   camera.renderImage();
-  EXPECT_EQ(1200u, stats.primaryRays.load());
+  const RayCounts& counts = camera.rayCounts();
+  EXPECT_EQ(1200u, counts.primary);
   // Most pixels see a mirror (several bounces each), the others the floor or a sphere (none):
-  EXPECT_GT(stats.secondaryRays.load(), 600u);
-  // TC02: counting stops when the stats are unset
-  tracer.setStats(nullptr);
-  tracer.traceRay(betweenMirrors);
-  EXPECT_EQ(1200u, stats.primaryRays.load());
+  EXPECT_GT(counts.secondary, 600u);
+  // TC02: the floor and the spheres are shaded, so shadow rays were cast (the mirrors have no
+  // diffuse or specular term: none from them); every camera and secondary ray tested every shape
+  // (the linear scan), a shadow ray at most every shape (it stops at an opaque blocker)
+  EXPECT_GT(counts.shadow, 0u);
+  const std::uint64_t n = s.scene.geometries.size();
+  EXPECT_GE(counts.queries.shapeTests, (counts.primary + counts.secondary) * n);
+  EXPECT_LT(counts.queries.shapeTests, counts.total() * n);
+  // TC11: the course's traceRay(ray) counts nowhere: the render's counts are unchanged
+  const RayCounts before = camera.rayCounts();
+  (void)WhittedTracer(s.scene).traceRay(betweenMirrors);
+  EXPECT_EQ(before, camera.rayCounts());
 }
 
 }  // namespace

@@ -276,28 +276,31 @@ TEST(ReflectionScenesTests, hallOfMirrors) {
 class CourseWhitted : public ShadowTracer {
  public:
   using ShadowTracer::ShadowTracer;
-  Color traceRay(const Ray& ray) const override {
+  using ShadowTracer::traceRay;
+  Color traceRay(const Ray& ray, SampleContext& ctx) const override {
     const std::optional<Hit> hit = intersector().closestHit(ray);
     if (!hit) return scene().background;
-    return scene().ambientLight.intensity() + calcColor(makeContext(*hit, ray), 10, Double3::ONE);
+    return scene().ambientLight.intensity() +
+           calcColor(makeContext(*hit, ray), 10, Double3::ONE, ctx);
   }
 
  private:
-  Color calcColor(const HitContext& h, int level, const Double3& k) const {
-    const Color local = localEffects(h, k);
+  Color calcColor(const HitContext& h, int level, const Double3& k, SampleContext& ctx) const {
+    const Color local = localEffects(h, k, ctx);
     if (level == 1) return local;
     const Material& m = h.appearance->material;
     const Double3 r = h.v.xyz() - h.normal.xyz() * (2 * h.v.xyz().dot(h.normal.xyz()));
-    return local + (effect(h, h.v, level, k, m.kT) + effect(h, Vector(r), level, k, m.kR));
+    return local +
+           (effect(h, h.v, level, k, m.kT, ctx) + effect(h, Vector(r), level, k, m.kR, ctx));
   }
   Color effect(const HitContext& h, const Vector& dir, int level, const Double3& k,
-               const Double3& kx) const {
+               const Double3& kx, SampleContext& ctx) const {
     const Double3 kkx = k * kx;
     if (kkx.lowerThan(0.001)) return Color::BLACK;
     const Ray ray = rayOffset().ray(h.point, h.normal, dir);
     const std::optional<Hit> hit = intersector().closestHit(ray);
     if (!hit) return scene().background * kx;
-    return calcColor(makeContext(*hit, ray), level - 1, kkx) * kx;
+    return calcColor(makeContext(*hit, ray), level - 1, kkx, ctx) * kx;
   }
 };
 

@@ -198,28 +198,44 @@ TEST(WhittedTracerTests, indexOfRefraction) {
   }
 }
 
-/// A tracer whose secondary rays all see (1000,0,0): the hook mini project 1 overrides.
+/// A tracer whose reflected rays all see (1000,0,0) and refracted rays (0,0,1000): the hook mini
+/// project 1 overrides. It records the kind of each call.
 class ConstantSecondary : public WhittedTracer {
  public:
   using WhittedTracer::WhittedTracer;
-  mutable int calls = 0;
+  mutable int reflected = 0, refracted = 0;
 
  protected:
-  Color secondaryColor(const HitContext&, const Ray&, int, const Double3&) const override {
-    ++calls;
-    return Color(1000, 0, 0);
+  Color secondaryColor(const HitContext&, const Ray&, SecondaryKind kind, int, const Double3&,
+                       SampleContext&) const override {
+    if (kind == SecondaryKind::Reflected) {
+      ++reflected;
+      return Color(1000, 0, 0);
+    }
+    ++refracted;
+    return Color(0, 0, 1000);
   }
 };
 
 TEST(WhittedTracerTests, secondaryColorHook) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: the override replaces what a secondary ray sees, and the tracer still weights it by
-  // kx: (10,10,10) + (5,5,5) + 0.5·(1000,0,0) = (515,15,15), one call (kR is 0)
+  // kx: (10,10,10) + (5,5,5) + 0.5·(0,0,1000) = (15,15,515), one refracted call (kR is 0)
   LitScene s = baseScene();
   s.add(square(0), Color(5, 5, 5), withKt(Double3(0.5)));
   const ConstantSecondary tracer(s);
-  expectColor(Color(515, 15, 15), tracer.traceRay(down));
-  EXPECT_EQ(1, tracer.calls);
+  expectColor(Color(15, 15, 515), tracer.traceRay(down));
+  EXPECT_EQ(1, tracer.refracted);
+  EXPECT_EQ(0, tracer.reflected);
+  // TC02: a mirror (kR 0.25, kT 0): one reflected call, (15,15,15) + 0.25·(1000,0,0)
+  LitScene m = baseScene();
+  Material mirror;
+  mirror.kR = Double3(0.25);
+  m.add(square(0), Color(5, 5, 5), mirror);
+  const ConstantSecondary mirrorTracer(m);
+  expectColor(Color(265, 15, 15), mirrorTracer.traceRay(down));
+  EXPECT_EQ(1, mirrorTracer.reflected);
+  EXPECT_EQ(0, mirrorTracer.refracted);
 }
 
 TEST(WhittedTracerTests, settingsValidation) {

@@ -88,17 +88,18 @@ TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
 
 TEST(BuiltinScenesTests, twoColorDocumentIsTheCourseScene) {
   // TC01: the document carries stage 4's scene and camera unchanged, as a LitScene whose every
-  // shape has the default appearance
+  // shape has the default appearance (one shared row)
   const SceneSetup<Scene> course = twoColorScene();
   const SceneDocument doc = findBuiltinScene("two-color")->make();
   EXPECT_EQ(doc.scene.geometries.size(), course.scene.geometries.size());
-  EXPECT_EQ(doc.scene.appearances.size(), course.scene.geometries.size());
+  EXPECT_EQ(doc.scene.appearances.size(), 1u);
+  EXPECT_EQ(doc.scene.appearanceIndex, std::vector<std::uint32_t>(4, 0));
   EXPECT_EQ(doc.scene.background, course.scene.background);
   EXPECT_EQ(doc.scene.ambientLight.intensity(), course.scene.ambientLight.intensity());
   EXPECT_EQ(doc.camera.nX, course.camera.nX);
   EXPECT_EQ(doc.camera.nY, course.camera.nY);
-  EXPECT_EQ(doc.geometryNames.size(), course.scene.geometries.size());
-  EXPECT_EQ(doc.geometryMaterialNames.size(), course.scene.geometries.size());
+  EXPECT_TRUE(doc.geometryNames.empty());
+  EXPECT_TRUE(doc.appearanceMaterialNames.empty());
 }
 
 TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {
@@ -262,8 +263,7 @@ TEST(CommandTests, renderStoppedBeforeItsFirstRowWritesNothing) {
                                                   "--height", "10", "--quiet"},
                          Io{o, e, false, &stop});
   EXPECT_EQ(code, 130);
-  EXPECT_EQ(e.str(),
-            "rt: interrupted after 0 of 100 primary rays; nothing written to " + out + "\n");
+  EXPECT_EQ(e.str(), "rt: interrupted after 0 of 100 pixels; nothing written to " + out + "\n");
   EXPECT_EQ(test::readFile(out), "the previous image");
 }
 
@@ -277,8 +277,7 @@ SceneDocument probeScene() {
   doc.scene.ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
   doc.scene.add(Sphere(Point(-1, 0.5, 5), 2), Color(300, 20, 20));
   doc.scene.add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
-  doc.geometryNames = {"ball \"A\"", ""};
-  doc.geometryMaterialNames = {std::nullopt, std::nullopt};
+  doc.geometryNames = {{0, "ball \"A\""}};
   return doc;
 }
 

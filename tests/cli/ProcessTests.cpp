@@ -169,8 +169,8 @@ TEST(RenderProcessTests, ctrlCStopsTheRenderAndWritesNothing) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(
       child.err(), m,
-      std::regex("rt: interrupted after ([0-9]+) of 1440000 primary rays; nothing written to " +
-                 out + "\n$")))
+      std::regex("rt: interrupted after ([0-9]+) of 1440000 pixels; nothing written to " + out +
+                 "\n$")))
       << child.err();
   // the render stopped part way: at least the reported 10%, not all of it
   EXPECT_GE(std::stoll(m[1]), 144000);

@@ -81,15 +81,15 @@ TEST(DefaultsTest, AmbientAndMaterial) {
 }
 
 TEST(DefaultsTest, Geometry) {
-  // EP01: a geometry with no emission, material or name: black, the model's Material, "".
+  // EP01: a geometry with no emission, material or name: black, the model's Material, no name
+  // and no named material.
   const SceneDocument doc =
       parse("\"geometries\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]");
   ASSERT_EQ(doc.scene.geometries.size(), 1u);
-  EXPECT_TRUE(same(doc.scene.appearances[0].emission.rgb(), Color::BLACK.rgb()));
-  EXPECT_TRUE(same(doc.scene.appearances[0].material, Material{}));
-  EXPECT_EQ(doc.geometryNames, std::vector<std::string>{""});
-  ASSERT_EQ(doc.geometryMaterialNames.size(), 1u);
-  EXPECT_FALSE(doc.geometryMaterialNames[0].has_value());
+  EXPECT_TRUE(same(doc.scene.appearanceOf(0).emission.rgb(), Color::BLACK.rgb()));
+  EXPECT_TRUE(same(doc.scene.appearanceOf(0).material, Material{}));
+  EXPECT_TRUE(doc.geometryNames.empty());
+  EXPECT_EQ(doc.materialNameOf(0), nullptr);
 }
 
 TEST(DefaultsTest, Lights) {

@@ -52,20 +52,58 @@ TEST(RoundTripTest, ExampleFile) {
   EXPECT_TRUE(sameBits(std::get<Sphere>(second.scene.geometries[2]).radius(), 50));
   EXPECT_TRUE(sameBits(std::get<PointLight>(second.scene.lights[1]).kL, 0.0005));
   EXPECT_TRUE(sameBits(std::get<SpotLight>(second.scene.lights[2]).kQ, 2e-5));
-  EXPECT_TRUE(sameBits(second.scene.appearances[0].material.kD.y, 0.5));
+  EXPECT_TRUE(sameBits(second.scene.appearanceOf(0).material.kD.y, 0.5));
   EXPECT_TRUE(sameBits(second.scene.ambientLight.kA().x, 0.15));
+}
+
+TEST(RoundTripTest, GeometriesThatLookAlikeShareARow) {
+  // EP01: a hundred spheres of one look: one row, and no names kept
+  std::string text =
+      R"({"camera": {"location": [0,0,10], "target": [0,0,0], "vpDistance": 1,
+          "vpSize": [1,1], "resolution": [4,4]}, "geometries": [)";
+  for (int i = 0; i < 100; ++i)
+    text += (i ? "," : "") + std::string(R"({"type": "sphere", "center": [)") + std::to_string(i) +
+            R"(,0,0], "radius": 0.1, "emission": [80,255,230],
+            "material": {"kD": 0.2, "kS": 0.33, "shininess": 10}})";
+  text += "]}";
+  const SceneDocument stars = parseScene(text, "stars.json");
+  EXPECT_EQ(100u, stars.scene.geometries.size());
+  EXPECT_EQ(1u, stars.scene.appearances.size());
+  EXPECT_TRUE(stars.geometryNames.empty());
+  // EP02: by name: the same named material and emission share a row, another emission is
+  // another row, and each row remembers the name (so the export writes it by name again)
+  const SceneDocument named = parseScene(R"({"camera": {"location": [0,0,10], "target": [0,0,0],
+      "vpDistance": 1, "vpSize": [1,1], "resolution": [4,4]},
+      "materials": {"glass": {"kT": 0.8}}, "geometries": [
+      {"type": "sphere", "center": [0,0,0], "radius": 1, "material": "glass"},
+      {"type": "sphere", "center": [3,0,0], "radius": 1, "material": "glass"},
+      {"type": "sphere", "center": [6,0,0], "radius": 1, "material": "glass", "emission": [9,9,9]},
+      {"type": "sphere", "center": [9,0,0], "radius": 1, "material": {"kT": 0.8}}]})",
+                                         "named.json");
+  EXPECT_EQ(named.scene.appearanceIndex, (std::vector<std::uint32_t>{0, 0, 1, 2}));
+  ASSERT_NE(named.materialNameOf(2), nullptr);
+  EXPECT_EQ(*named.materialNameOf(2), "glass");
+  EXPECT_EQ(named.materialNameOf(3), nullptr);
+  // BVA01: a material differing in the last bit of one coefficient is another row
+  const std::string twoLooks = R"({"camera": {"location": [0,0,10], "target": [0,0,0],
+      "vpDistance": 1, "vpSize": [1,1], "resolution": [4,4]}, "geometries": [
+      {"type": "sphere", "center": [0,0,0], "radius": 1, "material": {"kD": 0.2}},
+      {"type": "sphere", "center": [3,0,0], "radius": 1, "material": {"kD": 0.20000000000000004}}]})";
+  EXPECT_EQ(2u, parseScene(twoLooks, "two.json").scene.appearances.size());
 }
 
 TEST(RoundTripTest, KeepsNamesAndMaterialReferences) {
   // EP01: geometry names and "material by name" survive; inline materials stay inline.
   const SceneDocument doc = parseScene(dumpScene(loadScene(examplePath())), "dump");
-  ASSERT_EQ(doc.geometryNames.size(), 8u);
-  EXPECT_EQ(doc.geometryNames[0], "floor");
-  EXPECT_EQ(doc.geometryNames[1], "back wall");
-  EXPECT_EQ(doc.geometryNames[3], "");
-  ASSERT_EQ(doc.geometryMaterialNames.size(), 8u);
-  EXPECT_EQ(doc.geometryMaterialNames[2], std::optional<std::string>("glass"));
-  EXPECT_EQ(doc.geometryMaterialNames[3], std::nullopt);
+  ASSERT_EQ(doc.scene.geometries.size(), 8u);
+  ASSERT_NE(doc.geometryName(0), nullptr);
+  EXPECT_EQ(*doc.geometryName(0), "floor");
+  ASSERT_NE(doc.geometryName(1), nullptr);
+  EXPECT_EQ(*doc.geometryName(1), "back wall");
+  EXPECT_EQ(doc.geometryName(3), nullptr);
+  ASSERT_NE(doc.materialNameOf(2), nullptr);
+  EXPECT_EQ(*doc.materialNameOf(2), "glass");
+  EXPECT_EQ(doc.materialNameOf(3), nullptr);
   EXPECT_EQ(doc.materials.size(), 3u);
 }
 
@@ -154,16 +192,20 @@ TEST(ToJsonTest, RejectsDocumentsThatCannotBeWritten) {
   // EP02: a geometry naming a material the document does not have.
   SceneDocument unknownName = baseDocument();
   unknownName.scene.add(Sphere(Point(0, 0, 0), 1));
-  unknownName.geometryMaterialNames.push_back("glass");
+  unknownName.appearanceMaterialNames.push_back("glass");
   EXPECT_THROW((void)toJson(unknownName), std::logic_error);
   // EP03: a geometry naming a material but carrying another one.
   SceneDocument mismatch = unknownName;
   mismatch.materials["glass"] = Material{Double3(0), Double3(0), Double3(0.5), Double3(0), 0, 1.5};
   EXPECT_THROW((void)toJson(mismatch), std::logic_error);
-  // EP04: more names than geometries.
+  // EP04: a name for a geometry that does not exist.
   SceneDocument tooManyNames = baseDocument();
-  tooManyNames.geometryNames.push_back("ghost");
+  tooManyNames.geometryNames.emplace(0, "ghost");
   EXPECT_THROW((void)toJson(tooManyNames), std::logic_error);
+  // EP05: a shape without a row of the appearance table.
+  SceneDocument noRow = baseDocument();
+  noRow.scene.geometries.add(Sphere(Point(0, 0, 0), 1));
+  EXPECT_THROW((void)toJson(noRow), std::logic_error);
 }
 
 TEST(DumpSceneTest, Layout) {

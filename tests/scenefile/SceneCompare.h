@@ -52,12 +52,10 @@ class Fingerprint {
     for (std::uint32_t i = 0; i < d.scene.geometries.size(); ++i) {
       label("geometry " + std::to_string(i));
       std::visit([this](const auto& g) { addShape(g); }, d.scene.geometries[i]);
-      add(d.scene.appearances[i].emission.rgb());
-      add(d.scene.appearances[i].material);
-      if (i < d.geometryNames.size() && !d.geometryNames[i].empty())
-        label("name " + d.geometryNames[i]);
-      if (i < d.geometryMaterialNames.size() && d.geometryMaterialNames[i])
-        label("uses " + *d.geometryMaterialNames[i]);
+      add(d.scene.appearanceOf(i).emission.rgb());
+      add(d.scene.appearanceOf(i).material);
+      if (const std::string* name = d.geometryName(i)) label("name " + *name);
+      if (const std::string* material = d.materialNameOf(i)) label("uses " + *material);
     }
   }
 

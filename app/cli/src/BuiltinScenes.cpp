@@ -62,8 +62,6 @@ SceneDocument toDocument(const SceneSetup<LitScene>& setup, std::string_view tra
   doc.scene = setup.scene;
   doc.camera = setup.camera;
   doc.render.tracer = std::string(tracer);
-  doc.geometryNames.assign(doc.scene.geometries.size(), std::string());
-  doc.geometryMaterialNames.assign(doc.scene.geometries.size(), std::nullopt);
   return doc;
 }
 

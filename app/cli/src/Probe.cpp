@@ -74,7 +74,7 @@ int probe(const ParsedArgs& args, const Io& io) {
     // constructRay takes the grid as arguments: a 1x1 camera spares the nX x nY image.
     ray = doc.camera.builder().setResolution(1, 1).build().constructRay(nX, nY, x, y);
   }
-  const std::unique_ptr<RayTracer> tracer = findTracer(doc.render.tracer).make(doc, nullptr);
+  const std::unique_ptr<RayTracer> tracer = findTracer(doc.render.tracer).make(doc);
   io.out << probeJson(doc, *ray, *tracer);
   return EXIT_OK;
 }
@@ -89,13 +89,12 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer&
   const std::vector<GeoPoint> hits = shapes.findGeoIntersections(ray);
   for (std::size_t k = 0; k < hits.size(); ++k) {
     const GeoPoint& h = hits[k];
-    const std::string& name =
-        h.geometry < doc.geometryNames.size() ? doc.geometryNames[h.geometry] : std::string();
+    const std::string* name = doc.geometryName(h.geometry);
     os << (k == 0 ? "\n" : ",\n") << "    {\"t\": " << number(h.t)
        << ", \"point\": " << triple(h.point.xyz())
        << ", \"normal\": " << triple(normalAt(shapes[h.geometry], h.point).xyz())
-       << ", \"geometry\": " << h.geometry
-       << ", \"name\": " << (name.empty() ? "null" : jsonString(name)) << "}";
+       << ", \"geometry\": " << h.geometry << ", \"name\": " << (name ? jsonString(*name) : "null")
+       << "}";
   }
   os << (hits.empty() ? "" : "\n  ") << "],\n  \"color\": " << triple(tracer.traceRay(ray).rgb())
      << "\n}\n";

@@ -27,11 +27,12 @@ std::string formatDuration(double seconds) {
   return buf;
 }
 
-ProgressMonitor::ProgressMonitor(std::ostream& err, Style style, const CountingTracer& counter,
-                                 std::uint64_t total, std::uint64_t rowLength)
+ProgressMonitor::ProgressMonitor(std::ostream& err, Style style,
+                                 const std::atomic<std::uint64_t>& done, std::uint64_t total,
+                                 std::uint64_t rowLength)
     : err_(err),
       style_(style),
-      counter_(counter),
+      done_(done),
       total_(total == 0 ? 1 : total),
       rowLength_(rowLength == 0 ? 1 : rowLength),
       start_(std::chrono::steady_clock::now()),
@@ -56,7 +57,7 @@ void ProgressMonitor::run() {
 }
 
 void ProgressMonitor::report(bool last) {
-  const std::uint64_t done = std::min(counter_.count(), total_);
+  const std::uint64_t done = std::min(done_.load(std::memory_order_relaxed), total_);
   if (style_ == Style::Lines) {
     // One line per 10% step reached; steps passed between two polls are all printed, so the
     // log always reads 10%, 20%, ... in order.
@@ -76,7 +77,7 @@ void ProgressMonitor::report(bool last) {
          << total_ / rowLength_ << " rows";
     if (elapsed > 0 && done > 0) {
       const double rate = static_cast<double>(done) / elapsed;
-      line << ", " << static_cast<std::uint64_t>(rate) << " rays/s";
+      line << ", " << static_cast<std::uint64_t>(rate) << " pixels/s";
       if (done < total_)
         line << ", " << formatDuration(static_cast<double>(total_ - done) / rate) << " left";
     }

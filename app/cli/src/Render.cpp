@@ -1,6 +1,7 @@
 // rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet]
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "CommandTable.h"
 #include "camera/Camera.h"
 #include "camera/ImageWriter.h"
+#include "camera/RenderBlock.h"
 #include "cli/Progress.h"
 #include "cli/Tracers.h"
 
@@ -49,18 +51,16 @@ int render(const ParsedArgs& args, const Io& io) {
   checkImageFits(nX, nY);
 
   const TracerKind& kind = findTracer(doc.render.tracer);
-  TraceStats stats;
-  const std::unique_ptr<RayTracer> tracer = kind.make(doc, &stats);
-  auto counter = std::make_shared<CountingTracer>(*tracer);
-  Camera camera = doc.camera.builder()
-                      .setResolution(nX, nY)
-                      .setRayTracer(counter)
-                      .setImageWriter(std::make_shared<PngImageWriter>())
-                      .build();
+  const std::unique_ptr<RayTracer> tracer = kind.make(doc);
+  const Camera camera = doc.camera.builder().setResolution(nX, nY).build();
+  const CenterSampler sampler;
+  Image image(nX, nY);
 
   const bool quiet = args.has("--quiet");
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   const auto start = std::chrono::steady_clock::now();
+  std::atomic<std::uint64_t> donePixels{0};
+  RayCounts counts;
   bool interrupted = false;
   {
     std::unique_ptr<ProgressMonitor> progress;
@@ -70,12 +70,18 @@ int render(const ParsedArgs& args, const Io& io) {
       progress = std::make_unique<ProgressMonitor>(
           io.err,
           io.errIsTerminal ? ProgressMonitor::Style::Terminal : ProgressMonitor::Style::Lines,
-          *counter, total, static_cast<std::uint64_t>(nX));
+          donePixels, total, static_cast<std::uint64_t>(nX));
     }
-    try {
-      camera.renderImage(io.stop);
-    } catch (const RenderInterrupted&) {
-      interrupted = true;
+    // Row by row: a stop request (Ctrl-C) is seen within a row; each row's counts are added
+    // once, and its pixels reported to the progress thread once.
+    for (int y = 0; y < nY && !interrupted; ++y) {
+      if (io.stop && io.stop->load(std::memory_order_relaxed)) {
+        interrupted = true;
+        break;
+      }
+      const PixelBlock row{0, y, nX, y + 1};
+      counts += renderBlock(camera, *tracer, sampler, row, image);
+      donePixels.fetch_add(row.pixels(), std::memory_order_relaxed);
     }
     // A Ctrl-C that arrives after the last row still means "stop": nothing is written.
     if (io.stop && io.stop->load()) interrupted = true;
@@ -83,19 +89,19 @@ int render(const ParsedArgs& args, const Io& io) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (interrupted) {
-    io.err << "rt: interrupted after " << counter->count() << " of " << total
-           << " primary rays; nothing written to " << output << "\n";
+    io.err << "rt: interrupted after " << donePixels.load() << " of " << total
+           << " pixels; nothing written to " << output << "\n";
     return EXIT_INTERRUPTED;
   }
-  camera.writeToImage(output);
+  PngImageWriter().write(image, output);
   if (!quiet) {
     // The rate counts primary rays (pixels), the figure that compares across tracers; the
-    // Whitted tracer also says how many reflected and refracted rays it cast.
-    const double rate = seconds > 0 ? static_cast<double>(total) / seconds : 0;
+    // secondary and shadow rays the tracer cast are named when there are any.
+    const double rate = seconds > 0 ? static_cast<double>(counts.primary) / seconds : 0;
     io.err << "rt: wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
-           << total << " primary rays";
-    if (const std::uint64_t secondary = stats.secondaryRays.load(); secondary > 0)
-      io.err << " (+" << secondary << " reflected/refracted)";
+           << counts.primary << " primary rays";
+    if (counts.secondary > 0) io.err << " (+" << counts.secondary << " reflected/refracted)";
+    if (counts.shadow > 0) io.err << " (+" << counts.shadow << " shadow)";
     io.err << " in " << formatDuration(seconds) << " (" << static_cast<std::uint64_t>(rate)
            << " primary rays/s)\n";
   }

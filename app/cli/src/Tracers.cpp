@@ -13,23 +13,21 @@ namespace {
 
 const TracerKind kTracers[] = {
     {"ambient", "stage04_camera", "the ambient light wherever a ray hits a shape",
-     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+     [](const SceneDocument& doc) -> std::unique_ptr<RayTracer> {
        return std::make_unique<AmbientTracer>(doc.scene);
      }},
     {"phong", "stage05_lighting", "emission, ambient light and Phong shading; no shadows",
-     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+     [](const SceneDocument& doc) -> std::unique_ptr<RayTracer> {
        return std::make_unique<PhongTracer>(doc.scene);
      }},
     {"shadow", "stage06_shadows", "Phong shading with shadows, partial behind transparent shapes",
-     [](const SceneDocument& doc, TraceStats*) -> std::unique_ptr<RayTracer> {
+     [](const SceneDocument& doc) -> std::unique_ptr<RayTracer> {
        return std::make_unique<ShadowTracer>(doc.scene);
      }},
     {"whitted", "stage07_reflections", "shadows plus recursive reflection and refraction",
-     [](const SceneDocument& doc, TraceStats* stats) -> std::unique_ptr<RayTracer> {
-       auto tracer = std::make_unique<WhittedTracer>(
+     [](const SceneDocument& doc) -> std::unique_ptr<RayTracer> {
+       return std::make_unique<WhittedTracer>(
            doc.scene, nullptr, WhittedSettings{doc.render.maxLevel, doc.render.minK});
-       tracer->setStats(stats);
-       return tracer;
      }},
 };
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 
 #include <nlohmann/json.hpp>
 
@@ -23,6 +24,10 @@ struct Context {
   std::string source;
   const SourceMap& map;
   SceneDocument doc;
+  /// The rows of doc.scene's appearance table so far, by what makes them equal: the bits of the
+  /// emission and of the material, and the material's name when given by name. Geometries that
+  /// look the same share one row.
+  std::unordered_map<std::string, std::uint32_t> appearanceRows;
 };
 
 class Node {

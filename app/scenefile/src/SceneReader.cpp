@@ -11,6 +11,7 @@
 #include "Node.h"
 #include "Readers.h"
 #include "SourceMap.h"
+#include "camera/Camera.h"
 #include "camera/Image.h"
 #include "geometries/Geometry.h"
 #include "scenefile/SceneFile.h"
@@ -253,6 +254,37 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   f.materialName = name;
 }
 
+/// The bytes of a value, as a key: equal keys mean identical bits.
+template <typename T>
+void appendBits(std::string& key, const T& value) {
+  key.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+/// The row of the appearance table for the geometry's emission and material (checked already):
+/// an existing row when one is identical, else a new one.
+std::uint32_t appearanceRow(Context& ctx, const GeometryFields& f) {
+  std::string key;
+  appendBits(key, f.emission.rgb());
+  if (f.materialName) {
+    key += 'N';
+    key += *f.materialName;
+  } else {
+    const Material& m = f.material;
+    key += 'M';
+    for (const Double3* k : {&m.kD, &m.kS, &m.kT, &m.kR}) appendBits(key, *k);
+    appendBits(key, m.shininess);
+    appendBits(key, m.ior);
+  }
+  const auto [it, added] = ctx.appearanceRows.try_emplace(std::move(key), 0);
+  if (added) {
+    SceneDocument& doc = ctx.doc;
+    it->second = doc.scene.addAppearance(f.emission, f.material);
+    doc.appearanceMaterialNames.resize(doc.scene.appearances.size());
+    doc.appearanceMaterialNames.back() = f.materialName;
+  }
+  return it->second;
+}
+
 /// Adds the shape built by make() to the scene; a constructor's refusal is reported at the
 /// member `at` of the geometry (its "vertices", say), or at the geometry itself.
 template <typename Make>
@@ -264,14 +296,10 @@ void addGeometry(const Node& n, GeometryFields& f, std::string_view at, Make mak
   } catch (const std::invalid_argument& e) {
     place.fail(e.what());
   }
-  SceneDocument& doc = n.context().doc;
-  try {
-    doc.scene.add(std::move(*shape), f.emission, f.material);
-  } catch (const std::invalid_argument& e) {
-    n.fail(e.what());
-  }
-  doc.geometryNames.push_back(std::move(f.name));
-  doc.geometryMaterialNames.push_back(std::move(f.materialName));
+  Context& ctx = n.context();
+  SceneDocument& doc = ctx.doc;
+  const std::uint32_t index = doc.scene.add(std::move(*shape), appearanceRow(ctx, f));
+  if (!f.name.empty()) doc.geometryNames.emplace(index, std::move(f.name));
 }
 
 void buildPlane(const Node& n, GeometryFields& f) {
@@ -447,7 +475,7 @@ SceneDocument parseScene(std::string_view text, const std::string& sourceName) {
   }
   // The text is valid JSON (the first pass checked it with the same parser).
   const Json root = Json::parse(text.begin(), text.end());
-  Context ctx{text, sourceName, map, {}};
+  Context ctx{text, sourceName, map, {}, {}};
   readObject(Node(ctx, root), documentKeys(), ctx.doc, "a scene object");
   return std::move(ctx.doc);
 }

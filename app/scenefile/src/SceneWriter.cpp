@@ -245,14 +245,11 @@ void write(std::string& out, const Json& j, int indent, std::size_t column) {
 Json toJson(const SceneDocument& doc) {
   const LitScene& scene = doc.scene;
   const std::uint32_t n = scene.geometries.size();
-  if (scene.appearances.size() != n)
-    throw std::logic_error("toJson: " + std::to_string(scene.appearances.size()) +
-                           " appearances for " + std::to_string(n) + " geometries");
-  if (doc.geometryNames.size() > n || doc.geometryMaterialNames.size() > n)
-    throw std::logic_error("toJson: more geometry names (" +
-                           std::to_string(doc.geometryNames.size()) + ") or material names (" +
-                           std::to_string(doc.geometryMaterialNames.size()) +
-                           ") than geometries (" + std::to_string(n) + ")");
+  scene.validate();  // every shape has a row of the appearance table, every row is valid
+  if (!doc.geometryNames.empty() && doc.geometryNames.rbegin()->first >= n)
+    throw std::logic_error("toJson: a name for geometry " +
+                           std::to_string(doc.geometryNames.rbegin()->first) + " but there are " +
+                           std::to_string(n) + " geometries");
 
   Json j = Json::object();
   if (!scene.name.empty()) j["name"] = scene.name;
@@ -269,11 +266,9 @@ Json toJson(const SceneDocument& doc) {
   Json& geometries = j["geometries"] = Json::array();
   for (std::uint32_t i = 0; i < n; ++i) {
     Json g = shapeJson(scene.geometries[i]);
-    const Appearance& look = scene.appearances[i];
+    const Appearance& look = scene.appearanceOf(i);
     if (!same(look.emission.rgb(), Color::BLACK.rgb())) g["emission"] = color(look.emission);
-    const std::optional<std::string> materialName =
-        i < doc.geometryMaterialNames.size() ? doc.geometryMaterialNames[i] : std::nullopt;
-    if (materialName) {
+    if (const std::string* materialName = doc.materialNameOf(i)) {
       const auto it = doc.materials.find(*materialName);
       if (it == doc.materials.end())
         throw std::logic_error("toJson: geometry " + std::to_string(i) + " names material '" +
@@ -285,8 +280,7 @@ Json toJson(const SceneDocument& doc) {
     } else if (!same(look.material, Material{})) {
       g["material"] = materialJson(look.material);
     }
-    if (i < doc.geometryNames.size() && !doc.geometryNames[i].empty())
-      g["name"] = doc.geometryNames[i];
+    if (const std::string* name = doc.geometryName(i)) g["name"] = *name;
     geometries.push_back(std::move(g));
   }
   j["render"] = {{"tracer", doc.render.tracer},

@@ -4,6 +4,7 @@
 /// Whitted (stage 7) -> beams (mini project 1). Each stage adds a tracer class on top of the
 /// one below, so one scene can be rendered by any of them and compared.
 
+#include "camera/SampleContext.h"
 #include "camera/Scene.h"
 #include "intersections/Intersectable.h"
 #include "primitives/Color.h"
@@ -22,9 +23,15 @@ class RayTracer {
   RayTracer(const RayTracer&) = delete;
   RayTracer& operator=(const RayTracer&) = delete;
 
-  /// The colour seen along the ray. Must not allocate and must be safe to call from several
-  /// threads at once.
-  virtual Color traceRay(const Ray& ray) const = 0;
+  /// The colour seen along the ray, for the sample ctx describes: its random numbers come from
+  /// ctx.random, the rays it casts beyond this one are counted in ctx.counts (the caller counts
+  /// this one). Must not allocate, must not throw, and must be safe to call from several
+  /// threads at once, each with its own context.
+  virtual Color traceRay(const Ray& ray, SampleContext& ctx) const = 0;
+
+  /// The course's traceRay(ray): the sample of pixel (0, 0), index 0, seed 0, counted nowhere.
+  /// (A derived tracer says `using RayTracer::traceRay;` to keep this form visible.)
+  Color traceRay(const Ray& ray) const;
 
   const Scene& scene() const { return scene_; }
   const Intersectable& intersector() const { return intersector_; }
@@ -39,7 +46,8 @@ class RayTracer {
 class AmbientTracer : public RayTracer {
  public:
   using RayTracer::RayTracer;
-  Color traceRay(const Ray& ray) const override;
+  using RayTracer::traceRay;
+  Color traceRay(const Ray& ray, SampleContext& ctx) const override;
 };
 
 }  // namespace rt

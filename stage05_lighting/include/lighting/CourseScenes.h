@@ -28,8 +28,8 @@ std::span<const CourseScene> lightingScenes();
 
 /// Checks a table of built-in scenes (this stage's or a later one's), building every scene:
 /// each entry has a unique, non-empty kebab-case name (a-z, 0-9, '-'), a description longer
-/// than 10 characters and a make function; each scene it makes has a name, one appearance per
-/// shape and a camera that builds.
+/// than 10 characters and a make function; each scene it makes has a name, holds together
+/// (LitScene::validate) and has a camera that builds.
 /// @throws std::logic_error naming the first bad entry (its index and name) and what is wrong.
 void checkSceneTable(std::span<const CourseScene> table);
 

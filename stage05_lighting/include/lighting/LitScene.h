@@ -17,29 +17,52 @@ struct Appearance {
   Material material;
 };
 
-/// A scene with light sources, and an Appearance for every shape. appearances[i] belongs to
-/// geometries[i]; add() keeps the two lists aligned, and every tracer checks it once when it is
-/// constructed (std::logic_error otherwise).
+/// A scene with light sources, and how every shape looks.
+///
+/// Looks are kept in a table: appearances holds each distinct look once, and appearanceIndex[i]
+/// is the row of geometries[i]. A million stars of one material then cost 4 bytes each for their
+/// looks, not the size of an Appearance (136 bytes). add(shape, emission, material) makes a new
+/// row for each shape (what the course's scenes do); a scene with many shapes of few looks adds
+/// the rows once with addAppearance and the shapes with add(shape, row).
+///
+/// The lists are public, as the course's are; validate() checks that they fit together, and
+/// every tracer calls it once when it is constructed, so that nothing is checked per ray.
 struct LitScene : Scene {
   std::vector<Appearance> appearances;
+  std::vector<std::uint32_t> appearanceIndex;  ///< per shape: its row of appearances
   std::vector<LightSource> lights;
 
   LitScene() = default;
-  /// An unlit scene (stage 4) as a lit one: every shape gets the default Appearance.
-  explicit LitScene(const Scene& base) : Scene(base), appearances(base.geometries.size()) {}
+  /// An unlit scene (stage 4) as a lit one: every shape gets one default Appearance (row 0).
+  explicit LitScene(const Scene& base);
 
-  /// Adds a shape with its appearance and returns its index.
+  /// Adds a row to the table and returns its index.
+  /// @throws std::invalid_argument for an invalid material (see Material::validate).
+  std::uint32_t addAppearance(const Color& emission, const Material& material = {});
+  /// Adds a shape that looks like row `appearance` and returns its index.
+  /// @throws std::out_of_range when there is no such row.
+  std::uint32_t add(Geometry shape, std::uint32_t appearance);
+  /// Adds a shape with a look of its own (a new row) and returns its index.
+  /// @throws std::invalid_argument for an invalid material; nothing is added then.
   std::uint32_t add(Geometry shape, const Color& emission = Color::BLACK,
-                    const Material& material = {}) {
-    material.validate();
-    appearances.push_back({emission, material});
-    return geometries.add(std::move(shape));
+                    const Material& material = {});
+  /// @throws std::invalid_argument for an invalid light (see validate(LightSource)).
+  LitScene& addLight(LightSource light);
+
+  /// The look of shape `geometry`. Not checked (per-ray code; see validate()).
+  const Appearance& appearanceOf(std::uint32_t geometry) const noexcept {
+    return appearances[appearanceIndex[geometry]];
   }
-  LitScene& addLight(LightSource light) {
-    validate(light);
-    lights.push_back(std::move(light));
-    return *this;
+  Appearance& appearanceOf(std::uint32_t geometry) noexcept {
+    return appearances[appearanceIndex[geometry]];
   }
+
+  /// Checks that the lists fit together: one appearance row per shape, every row index within
+  /// the table, every material and light valid.
+  /// @throws std::logic_error naming both sizes when the shapes and their rows differ in number,
+  ///         or the shape and the index when a row does not exist; std::invalid_argument naming
+  ///         appearances[i] or lights[i] and the field for an invalid material or light.
+  void validate() const;
 };
 
 }  // namespace rt

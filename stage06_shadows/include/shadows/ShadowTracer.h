@@ -25,24 +25,31 @@ class ShadowTracer : public PhongTracer {
   /// @param scene must outlive the tracer.
   /// @param accelerator see RayTracer.
   /// @param offset how secondary rays leave a surface (default: scale-aware).
-  /// @throws std::logic_error when scene.appearances and scene.geometries differ in size.
+  /// @throws what scene.validate() throws.
   explicit ShadowTracer(const LitScene& scene, const Intersectable* accelerator = nullptr,
                         const RayOffset& offset = RayOffset{});
 
   const RayOffset& rayOffset() const { return offset_; }
 
-  /// The shadow query from point p of a surface with unit normal n towards a light that gives p
-  /// the sample light, for a path of weight k. Allocates nothing.
+  /// The shadow ray from point p of a surface with unit normal n along the unit direction
+  /// toLight, to a light at distance lightDistance from p (+infinity for a directional light),
+  /// for a path of weight k; counted in counts (one shadow ray and its queries). Allocates
+  /// nothing, never throws.
+  Transmittance shadowQuery(const Point& p, const Vector& n, const Vector& toLight,
+                            double lightDistance, const Double3& k,
+                            RayCounts& counts) const noexcept;
+  /// The same towards a light that gives p the sample light (its direction −l, its distance).
   Transmittance shadowQuery(const Point& p, const Vector& n, const LightSample& light,
-                            const Double3& k = Double3::ONE) const noexcept;
+                            const Double3& k, RayCounts& counts) const noexcept;
 
  protected:
-  /// The transmittance towards the light, or ZERO when (transmittance·k).lowerThan(
-  /// MIN_CALC_COLOR_K) (the light is then skipped).
-  Double3 transparency(const HitContext& h, const LightSample& light,
-                       const Double3& k) const override;
+  /// The transmittance towards the light (one shadow ray), ZERO when it, or it times k, is
+  /// lowerThan(MIN_CALC_COLOR_K) (the light is then skipped).
+  Double3 transmittance(const HitContext& h, std::uint32_t light, const LightSample& sample,
+                        const Double3& k, SampleContext& ctx) const override;
 
   RayOffset offset_;
+  ShadowQuery shadows_;
 };
 
 }  // namespace rt

@@ -6,7 +6,6 @@
 #include "primitives/Color.h"
 #include "primitives/Double3.h"
 #include "primitives/Ray.h"
-#include "reflections/TraceStats.h"
 #include "shadows/RayOffset.h"
 #include "shadows/ShadowTracer.h"
 
@@ -29,6 +28,10 @@ struct WhittedSettings {
   void validate() const;
 };
 
+/// Which secondary ray a hook is asked to cast: the mini project's glossy surfaces blur the
+/// reflected ray, its diffused glass the refracted one.
+enum class SecondaryKind { Reflected, Refracted };
+
 /// The course's stage-7 tracer (Whitted): shadows, plus recursive reflection and refraction.
 ///
 ///   traceRay(ray)    = background on a miss, else ambient + calcColor(hit, maxLevel, (1,1,1))
@@ -50,38 +53,35 @@ class WhittedTracer : public ShadowTracer {
                          const WhittedSettings& settings = {},
                          const RayOffset& offset = RayOffset{});
 
-  Color traceRay(const Ray& ray) const override;
+  using RayTracer::traceRay;
+  Color traceRay(const Ray& ray, SampleContext& ctx) const override;
 
   const WhittedSettings& settings() const { return settings_; }
 
-  /// Counts rays into stats from now on (nullptr: stop counting). stats must outlive the
-  /// renders; set it before rendering, not during.
-  void setStats(TraceStats* stats) { stats_ = stats; }
-
  protected:
   /// The colour of a hit at recursion level `level` reached with path weight k (no ambient).
-  Color calcColor(const HitContext& h, int level, const Double3& k) const;
+  Color calcColor(const HitContext& h, int level, const Double3& k, SampleContext& ctx) const;
 
   /// The reflected and refracted contributions of a hit at level > 1.
-  Color globalEffects(const HitContext& h, int level, const Double3& k) const;
+  Color globalEffects(const HitContext& h, int level, const Double3& k, SampleContext& ctx) const;
 
   /// One secondary ray of weight kx leaving h along the unit direction dir: nothing when
-  /// (k·kx).lowerThan(minK); else kx · secondaryColor(h, ray, level, k·kx), the ray starting at
-  /// h.point shifted by the RayOffset to dir's side.
-  Color secondaryEffect(const HitContext& h, const Vector& dir, int level, const Double3& k,
-                        const Double3& kx) const;
+  /// (k·kx).lowerThan(minK); else kx · secondaryColor(h, ray, kind, level, k·kx), the ray
+  /// starting at h.point shifted by the RayOffset to dir's side.
+  Color secondaryEffect(const HitContext& h, const Vector& dir, SecondaryKind kind, int level,
+                        const Double3& k, const Double3& kx, SampleContext& ctx) const;
 
-  /// The colour seen along one secondary ray cast from the hit `from` at recursion level `level`
-  /// with path weight kkx (= k·kx, already checked against minK), before it is weighted by kx:
-  /// calcColor(closest hit, level − 1, kkx), or the background when the ray hits nothing.
+  /// The colour seen along one secondary ray (reflected or refracted, says kind) cast from the
+  /// hit `from` at recursion level `level` with path weight kkx (= k·kx, already checked against
+  /// minK), before it is weighted by kx: calcColor(closest hit, level − 1, kkx), or the
+  /// background when the ray hits nothing. Counts one secondary ray in ctx.counts.
   ///
   /// The hook of mini project 1: a tracer that replaces one secondary ray by a beam of rays
   /// overrides this and averages the base version over the beam.
-  virtual Color secondaryColor(const HitContext& from, const Ray& secondary, int level,
-                               const Double3& kkx) const;
+  virtual Color secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
+                               int level, const Double3& kkx, SampleContext& ctx) const;
 
   WhittedSettings settings_;
-  TraceStats* stats_ = nullptr;
 };
 
 }  // namespace rt

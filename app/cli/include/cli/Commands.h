@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 
+#include "camera/RayTracer.h"
 #include "primitives/Ray.h"
 #include "scenefile/SceneDocument.h"
 

@@ -2,11 +2,10 @@
 /// @file Progress.h
 /// Progress of a render, reported from a thread of its own so that the render loop only counts.
 ///
-/// The camera asks its tracer for one colour per pixel; CountingTracer sits between the two and
-/// counts those primary rays (one relaxed atomic increment, nothing else), and ProgressMonitor
-/// reads the count a few times a second and prints to stderr: on a terminal a percentage
-/// redrawn in place (rows done, rate, time left), otherwise one plain line per 10%, which reads
-/// well in a log.
+/// The render loop adds a finished block's pixels to an atomic counter, once per block (never
+/// per ray), and ProgressMonitor reads the count a few times a second and prints to stderr: on
+/// a terminal a percentage redrawn in place (rows done, rate, time left), otherwise one plain
+/// line per 10%, which reads well in a log.
 
 #include <atomic>
 #include <chrono>
@@ -17,37 +16,17 @@
 #include <string>
 #include <thread>
 
-#include "camera/RayTracer.h"
-
 namespace rt::cli {
-
-/// Passes every ray on to inner and counts them. Safe to call from several threads.
-class CountingTracer final : public RayTracer {
- public:
-  /// @param inner must outlive this tracer.
-  explicit CountingTracer(const RayTracer& inner)
-      : RayTracer(inner.scene(), &inner.intersector()), inner_(inner) {}
-
-  Color traceRay(const Ray& ray) const override {
-    const Color c = inner_.traceRay(ray);
-    count_.fetch_add(1, std::memory_order_relaxed);
-    return c;
-  }
-
-  std::uint64_t count() const { return count_.load(std::memory_order_relaxed); }
-
- private:
-  const RayTracer& inner_;
-  mutable std::atomic<std::uint64_t> count_{0};
-};
 
 /// Prints progress while it lives. Stop it (or destroy it) before writing to err again.
 class ProgressMonitor {
  public:
   enum class Style { Terminal, Lines };
 
-  /// @param rowLength rays per image row (nX), to report rows on a terminal.
-  ProgressMonitor(std::ostream& err, Style style, const CountingTracer& counter,
+  /// @param done the pixels finished so far (the render loop adds each block's when it is done)
+  /// @param total the image's pixels
+  /// @param rowLength pixels per image row (nX), to report rows on a terminal.
+  ProgressMonitor(std::ostream& err, Style style, const std::atomic<std::uint64_t>& done,
                   std::uint64_t total, std::uint64_t rowLength);
   ~ProgressMonitor();
   ProgressMonitor(const ProgressMonitor&) = delete;
@@ -62,7 +41,7 @@ class ProgressMonitor {
 
   std::ostream& err_;
   Style style_;
-  const CountingTracer& counter_;
+  const std::atomic<std::uint64_t>& done_;
   std::uint64_t total_, rowLength_;
   std::chrono::steady_clock::time_point start_;
   int lastDecile_ = 0;                         ///< Lines: the last 10% step printed

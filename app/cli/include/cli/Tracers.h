@@ -9,7 +9,6 @@
 #include <string_view>
 
 #include "camera/RayTracer.h"
-#include "reflections/TraceStats.h"
 #include "scenefile/SceneDocument.h"
 
 namespace rt::cli {
@@ -18,9 +17,8 @@ struct TracerKind {
   std::string_view name;         ///< the value of --tracer and of a scene file's render.tracer
   std::string_view stage;        ///< the stage that adds it
   std::string_view description;  ///< one line
-  /// Builds the tracer over doc.scene with doc.render's settings; doc must outlive it. A tracer
-  /// that can count its secondary rays counts them into stats when it is not nullptr.
-  std::unique_ptr<RayTracer> (*make)(const SceneDocument& doc, TraceStats* stats);
+  /// Builds the tracer over doc.scene with doc.render's settings; doc must outlive it.
+  std::unique_ptr<RayTracer> (*make)(const SceneDocument& doc);
 };
 
 /// ambient, phong, shadow, whitted.
