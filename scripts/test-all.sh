@@ -5,8 +5,9 @@
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
 # (scripts/deps.sh), configures the release preset, builds all targets and runs ctest with output
-# on failure. Options go to ctest (for example -L stage03, or -R Sphere). The last line printed is
-# ctest's summary ("100% tests passed, 0 tests failed out of N"); the exit code is ctest's. Set
+# on failure. Options go to ctest (for example -L stage03, or -R Sphere); a selection that
+# matches no test is an error (--no-tests=error), not a pass. The last line printed is ctest's
+# summary ("100% tests passed, 0 tests failed out of N"); the exit code is ctest's. Set
 # RT_BUILD_DIR to build somewhere other than build/release, RT_JOBS to change the parallelism.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
@@ -30,7 +31,8 @@ echo "Built in $(rt_elapsed "$start")"
 rt_banner "Testing"
 log="$build_dir/test-all.log"
 set +e
-ctest --test-dir "$build_dir" --output-on-failure --parallel "$RT_JOBS" "$@" 2>&1 | tee "$log"
+ctest --test-dir "$build_dir" --no-tests=error --output-on-failure --parallel "$RT_JOBS" "$@" 2>&1 |
+  tee "$log"
 status="${PIPESTATUS[0]}"
 set -e
 # ctest prints its summary line before the label times and the list of failures; repeat it so
