@@ -79,7 +79,7 @@ class Stage:
         return self.count("passed") + self.count("failed")
 
     @property
-    def passed(self) -> bool:
+    def ok(self) -> bool:
         return not self.problem and self.ran > 0 and self.count("failed") == 0
 
     @property
@@ -95,7 +95,7 @@ class Stage:
             return f"FAIL: {self.problem}"
         left_out = [f"{n} {s}" for s in ("skipped", "disabled") if (n := self.count(s))]
         note = f" ({', '.join(left_out)})" if left_out else ""
-        if self.passed:
+        if self.ok:
             return "pass" + note
         return f"FAIL: {self.count('failed')} of {self.ran} failed" + note
 
@@ -180,7 +180,7 @@ def plan(weights: list[Weight], folders: dict[str, str], wanted: list[str],
             if not hits:
                 raise UsageError(f"--stage: '{name}' is no stage of this checkout (stages: "
                                  f"{', '.join(s.label for s in stages)})")
-            chosen.update(hits)
+            chosen.add(hits[0])
         stages = [s for s in stages if s.label in chosen]
     return stages, absent
 
@@ -282,7 +282,7 @@ def total_score(stages: list[Stage]) -> float:
 
 
 def failed_required(stages: list[Stage]) -> list[str]:
-    return [s.label for s in stages if s.required and not s.passed]
+    return [s.label for s in stages if s.required and not s.ok]
 
 
 def columns(rows: list[tuple[str, ...]], right: tuple[int, ...] = ()) -> str:
