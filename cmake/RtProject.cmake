@@ -46,7 +46,8 @@ function(rt_add_stage_library target)
 endfunction()
 
 # rt_add_stage_tests(<label> SOURCES ... DEPENDS ...): one GoogleTest executable per stage, its
-# tests labelled <label> so that `ctest -L <label>` selects exactly that stage.
+# tests labelled <label> so that `ctest -L <label>` selects exactly that stage. The target is
+# <label>_tests: scripts/grade builds it to grade the stage.
 function(rt_add_stage_tests label)
   if(NOT RT_BUILD_TESTS)
     return()

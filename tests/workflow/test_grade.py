@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""scripts/grade grading the fixture project of tests/workflow/fixture: its table, results.json,
+JUnit files and exit codes, for a whole checkout, a course-mode cut, one stage, a label that
+selects nothing, and bad usage. It builds nothing of the ray tracer: the fixture's tests are
+shell commands. Run by ctest as workflow.grade, or alone: python3 tests/workflow/test_grade.py
+"""
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent
+FIXTURE = HERE / "fixture"
+
+# stage02 fails one test but is optional, so the whole checkout grades with exit 0.
+WEIGHTS = """\
+# the fixture's weights: STAGE POINTS REQUIRED
+stage01  10  yes
+stage02  20  no    # one of its 4 tests fails
+stage03  30  no    # no test carries its label
+mini1    40  no    # does not build
+mini2     5  yes   # no such folder: not graded, not a failure
+"""
+
+FULL_TABLE = """\
+stage    tests       points  required  result
+stage01    3/3   10.00 / 10  yes       pass (1 skipped, 1 disabled)
+stage02    3/4   15.00 / 20  no        FAIL: 1 of 4 failed
+stage03    0/0    0.00 / 30  no        FAIL: no tests
+mini1      0/0    0.00 / 40  no        FAIL: build failed
+total      6/7  25.00 / 100            required stages pass
+not in this checkout, not graded: mini2
+"""
+
+
+def write(path: Path, text: str) -> Path:
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def grade(*args: object, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    """scripts/grade without package installs, one job at a time."""
+    return subprocess.run(["bash", str(REPO / "scripts" / "grade"), "--no-deps", "--jobs", "1",
+                           *map(str, args)], capture_output=True, text=True, cwd=cwd,
+                          check=False)
+
+
+class GradeTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls) -> None:
+        cls.tmp = Path(tempfile.mkdtemp(prefix="grade-test-"))
+        cls.weights = write(cls.tmp / "weights.txt", WEIGHTS)
+        cls.build = cls.tmp / "build"
+        cls.full = grade("--source-dir", FIXTURE, "--build-dir", cls.build,
+                         "--weights", cls.weights)
+        cls.out = cls.build / "grading"
+
+    @classmethod
+    def tearDownClass(cls) -> None:
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def write(self, name: str, text: str) -> Path:
+        return write(self.tmp / name, text)
+
+    def results(self, path: Path) -> dict:
+        return json.loads(path.read_text(encoding="utf-8"))
+
+    def assert_exit(self, run: subprocess.CompletedProcess, code: int) -> None:
+        self.assertEqual(run.returncode, code, f"stdout:\n{run.stdout}\nstderr:\n{run.stderr}")
+
+    # ---- The whole fixture: every kind of stage result ----
+
+    def test_whole_checkout_prints_the_table_and_exits_0_when_only_optional_stages_fail(self):
+        self.assert_exit(self.full, 0)
+        self.assertIn(FULL_TABLE, self.full.stdout)
+
+    def test_whole_checkout_prints_the_paths_it_wrote(self):
+        for path in (self.out / "junit-stage01.xml", self.out / "junit-stage02.xml",
+                     self.out / "results.json", self.out / "logs"):
+            self.assertIn(f"  {path}", self.full.stdout)
+            self.assertTrue(path.exists(), path)
+
+    def test_results_json_has_one_entry_per_test_or_failed_stage_and_the_total(self):
+        results = self.results(self.out / "results.json")
+        self.assertEqual(results["score"], 25.0)
+        entries = {t["name"]: t for t in results["tests"]}
+        self.assertEqual(list(entries), [
+            "stage01: Vector.add", "stage01: Vector.scale", "stage01: Point.subtract",
+            "stage02: Sphere.normal", "stage02: Plane.normal", "stage02: Triangle.normal",
+            "stage02: Tube.normal", "stage03: no tests", "mini1: build failed"])
+        for name in ("stage01: Vector.add", "stage01: Vector.scale", "stage01: Point.subtract"):
+            self.assertEqual((entries[name]["score"], entries[name]["max_score"],
+                              entries[name]["status"]), (3.3333, 3.3333, "passed"))
+        self.assertEqual((entries["stage02: Sphere.normal"]["score"],
+                          entries["stage02: Sphere.normal"]["max_score"]), (5.0, 5.0))
+        failed = entries["stage02: Tube.normal"]
+        self.assertEqual((failed["score"], failed["max_score"], failed["status"]),
+                         (0.0, 5.0, "failed"))
+        self.assertIn("expected 42, got 41", failed["output"])
+        no_tests = entries["stage03: no tests"]
+        self.assertEqual((no_tests["score"], no_tests["max_score"], no_tests["status"]),
+                         (0.0, 30.0, "failed"))
+        self.assertIn("'ctest -L ^stage03$' selects no test", no_tests["output"])
+        broken = entries["mini1: build failed"]
+        self.assertEqual((broken["score"], broken["max_score"]), (0.0, 40.0))
+        self.assertIn("Beam.cpp:7: error: expected a semicolon", broken["output"])
+        self.assertEqual(results["output_format"], "md")
+        self.assertIn(FULL_TABLE.splitlines()[1], results["output"])
+
+    def test_results_json_extra_data_summarises_each_stage(self):
+        stages = self.results(self.out / "results.json")["extra_data"]["stages"]
+        self.assertEqual([(s["stage"], s["passed"], s["total"], s["skipped"], s["disabled"],
+                           s["score"], s["max_score"], s["required"]) for s in stages], [
+            ("stage01", 3, 3, 1, 1, 10.0, 10.0, True),
+            ("stage02", 3, 4, 0, 0, 15.0, 20.0, False),
+            ("stage03", 0, 0, 0, 0, 0.0, 30.0, False),
+            ("mini1", 0, 0, 0, 0, 0.0, 40.0, False)])
+
+    def test_junit_files_come_from_ctest_for_the_stages_whose_tests_ran(self):
+        suite = ET.parse(self.out / "junit-stage02.xml").getroot()
+        cases = {c.get("name"): c.get("status") for c in suite.iter("testcase")}
+        self.assertEqual(cases, {"Sphere.normal": "run", "Plane.normal": "run",
+                                 "Triangle.normal": "run", "Tube.normal": "fail"})
+        self.assertFalse((self.out / "junit-stage03.xml").exists())
+        self.assertFalse((self.out / "junit-mini1.xml").exists())
+
+    # ---- Exit codes of failing required stages ----
+
+    def test_a_failing_required_stage_exits_1(self):
+        weights = self.write("required.txt", WEIGHTS.replace("stage02  20  no", "stage02  20  yes"))
+        run = grade("-S", FIXTURE, "-B", self.tmp / "build-required", "--weights", weights,
+                    "--stage", "stage01", "--stage", "stage02")
+        self.assert_exit(run, 1)
+        self.assertIn("\nstage    tests      points  required  result\n"
+                      "stage01    3/3  10.00 / 10  yes       pass (1 skipped, 1 disabled)\n"
+                      "stage02    3/4  15.00 / 20  yes       FAIL: 1 of 4 failed\n"
+                      "total      6/7  25.00 / 30            "
+                      "FAIL: required stage failed: stage02\n", run.stdout)
+        self.assertIn("grade: required stage(s) failed: stage02", run.stderr)
+
+    def test_a_required_stage_whose_label_selects_no_test_fails_with_exit_1(self):
+        weights = self.write("empty.txt", WEIGHTS.replace("stage03  30  no", "stage03  30  yes"))
+        out = self.tmp / "out-empty"
+        run = grade("-S", FIXTURE, "-B", self.build, "--no-build", "--weights", weights,
+                    "--stage", "stage03_empty", "--output-dir", out)
+        self.assert_exit(run, 1)
+        self.assertIn("stage03    0/0  0.00 / 30  yes       FAIL: no tests\n", run.stdout)
+        results = self.results(out / "results.json")
+        self.assertEqual(results["score"], 0.0)
+        self.assertEqual([(t["name"], t["score"], t["max_score"]) for t in results["tests"]],
+                         [("stage03: no tests", 0.0, 30.0)])
+
+    # ---- One stage, course mode, Gradescope's paths ----
+
+    def test_one_stage_without_building_grades_only_that_stage_and_drops_stale_junit(self):
+        out = self.tmp / "out-one"
+        out.mkdir()
+        (out / "junit-stage02.xml").write_text("<testsuite/>", encoding="utf-8")
+        run = grade("-S", FIXTURE, "-B", self.build, "--no-build", "--weights", self.weights,
+                    "--stage", "stage01", "-o", out)
+        self.assert_exit(run, 0)
+        self.assertIn("\nstage    tests      points  required  result\n"
+                      "stage01    3/3  10.00 / 10  yes       pass (1 skipped, 1 disabled)\n"
+                      "total      3/3  10.00 / 10            required stages pass\n"
+                      "not in this checkout, not graded: mini2\n", run.stdout)
+        self.assertNotIn("building", run.stdout)
+        self.assertEqual(self.results(out / "results.json")["score"], 10.0)
+        self.assertFalse((out / "junit-stage02.xml").exists())
+
+    def test_course_mode_checkout_grades_the_stages_it_has_into_gradescope_paths(self):
+        course = self.tmp / "course"
+        shutil.copytree(FIXTURE, course,
+                        ignore=shutil.ignore_patterns("stage03_empty", "mini1_broken"))
+        # Relative paths are the caller's, whatever its directory.
+        run = grade("-S", "course", "-B", "build-course", "--weights", "weights.txt",
+                    "--results", "autograder/results/results.json", cwd=self.tmp)
+        self.assert_exit(run, 0)
+        self.assertIn("stage01    3/3  10.00 / 10  yes       pass (1 skipped, 1 disabled)\n"
+                      "stage02    3/4  15.00 / 20  no        FAIL: 1 of 4 failed\n"
+                      "total      6/7  25.00 / 30            required stages pass\n"
+                      "not in this checkout, not graded: stage03, mini1, mini2\n", run.stdout)
+        results = self.tmp / "autograder" / "results" / "results.json"
+        self.assertIn(f"  {results}\n", run.stdout)
+        self.assertEqual(self.results(results)["score"], 25.0)
+
+    # ---- Bad usage: exit 2, naming the bad value, writing no results ----
+
+    def assert_usage_error(self, message: str, *args: object, weights: Path | None = None):
+        out = self.tmp / "out-usage"
+        run = grade("-S", FIXTURE, "-B", self.tmp / "build-usage", "-o", out,
+                    "--weights", weights or self.weights, *args)
+        self.assert_exit(run, 2)
+        self.assertIn(message, run.stderr)
+        self.assertFalse((out / "results.json").exists())
+
+    def test_an_unknown_stage_is_a_usage_error(self):
+        self.assert_usage_error("--stage: 'stage09' is no stage of this checkout", "--stage",
+                                "stage09")
+
+    def test_a_stage_folder_without_weight_is_a_usage_error(self):
+        weights = self.write("no-mini1.txt", WEIGHTS.replace("mini1    40  no", ""))
+        self.assert_usage_error("stage folder(s) without a row in", weights=weights)
+        self.assert_usage_error("mini1_broken", weights=weights)
+
+    def test_a_malformed_weights_row_is_a_usage_error_naming_file_line_and_value(self):
+        weights = self.write("bad.txt", "stage01 10 yes\nstage02 ten no\n")
+        self.assert_usage_error(f"{weights}:2: POINTS of stage02: expected a number >= 0, "
+                                "got 'ten'", weights=weights)
+
+    def test_a_bad_option_value_is_a_usage_error(self):
+        self.assert_usage_error("--jobs: expected a positive integer, got '0'", "--jobs", "0")
+
+    # ---- The repository's own weights ----
+
+    def test_the_repository_weights_cover_every_stage_folder_of_the_repository(self):
+        run = subprocess.run(["bash", str(REPO / "scripts" / "grade"), "--no-deps", "--list"],
+                             capture_output=True, text=True, check=False)
+        self.assert_exit(run, 0)
+        folders = [p.name for p in REPO.iterdir()
+                   if p.name.startswith(("stage", "mini")) and (p / "CMakeLists.txt").is_file()]
+        self.assertTrue(folders)
+        for folder in folders:
+            self.assertIn(f"  {folder}  ", run.stdout)
+
+
+class CheckCtestLinesTest(unittest.TestCase):
+    """scripts/check-ctest-lines.sh finds a documented ctest command that can select nothing."""
+
+    def check(self, name: str, text: str) -> subprocess.CompletedProcess:
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / name
+            path.write_text(text, encoding="utf-8")
+            run = subprocess.run(["bash", str(REPO / "scripts" / "check-ctest-lines.sh"),
+                                  str(path)], capture_output=True, text=True, check=False)
+            return subprocess.CompletedProcess(run.args, run.returncode,
+                                               run.stdout.replace(str(path), name), run.stderr)
+
+    def test_markdown_commands_need_no_tests_error_or_a_preset(self):
+        run = self.check("README.md",
+                         "Run `ctest --test-dir build -L stage03` or `ctest -L cli`.\n"
+                         "Fine: `ctest --preset release -L stage03`, `ctest -N -L x`,\n"
+                         "```sh\ncmake --build b && ctest --test-dir b --no-tests=error\n"
+                         "ctest --test-dir b \\\n  -L stage05\n```\n"
+                         "A bare `ctest` is no command line.\n")
+        self.assertEqual(run.returncode, 1)
+        self.assertEqual(run.stdout, "README.md:1: ctest --test-dir build -L stage03\n"
+                                     "README.md:1: ctest -L cli\n"
+                                     "README.md:5: ctest --test-dir b    -L stage05\n")
+
+    def test_script_commands_are_checked_and_comments_are_not(self):
+        run = self.check("run.sh", "# ctest -L x\nctest --test-dir b -L x | tee log\n"
+                                   "if ! ctest --test-dir b --no-tests=error; then :; fi\n")
+        self.assertEqual(run.returncode, 1)
+        self.assertEqual(run.stdout, "run.sh:2: ctest --test-dir b -L x\n")
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
