@@ -14,6 +14,7 @@
 #include "camera/Camera.h"
 #include "camera/Image.h"
 #include "geometries/Geometry.h"
+#include "reflections/WhittedTracer.h"
 #include "scenefile/SceneFile.h"
 
 namespace rt {
@@ -25,10 +26,6 @@ namespace {
 constexpr Presence REQUIRED = Presence::Required;
 constexpr Presence DEFAULTED = Presence::Defaulted;
 constexpr Presence OPTIONAL = Presence::Optional;
-
-/// The deepest recursion render.maxLevel may ask for (each level is a stack frame of the
-/// recursive tracer; the course uses 10).
-constexpr int MAX_LEVEL_LIMIT = 1000;
 
 constexpr std::string_view TRACERS[] = {"ambient", "phong", "shadow", "whitted"};
 
@@ -393,7 +390,9 @@ const KeyTable<RenderSettings>& renderKeys() {
       {"tracer", DEFAULTED, "\"whitted\"",
        [](const Node& n, RenderSettings& r) { r.tracer = readChoice(n, "a tracer", TRACERS); }},
       {"maxLevel", DEFAULTED, "10",
-       [](const Node& n, RenderSettings& r) { r.maxLevel = readInteger(n, 1, MAX_LEVEL_LIMIT); }},
+       [](const Node& n, RenderSettings& r) {
+         r.maxLevel = readInteger(n, 1, WhittedSettings::MAX_LEVEL_LIMIT);
+       }},
       {"minK", DEFAULTED, "0.001",
        [](const Node& n, RenderSettings& r) { r.minK = readNumberIn(n, 0, 1); }},
   };

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "geometries/Geometry.h"
+#include "primitives/Overloaded.h"
 #include "scenefile/SceneFile.h"
 
 namespace rt {
@@ -13,13 +14,6 @@ namespace rt {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-template <typename... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-template <typename... F>
-Overloaded(F...) -> Overloaded<F...>;
 
 /// Bitwise equality: 0 and -0 differ, as they do when read back.
 bool same(double a, double b) {
