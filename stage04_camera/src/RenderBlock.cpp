@@ -7,20 +7,24 @@
 
 namespace rt {
 
-Color PixelSampler::traceSample(const Camera& camera, const RayTracer& tracer, int x, int y,
-                                std::uint32_t sample, double px, double py,
-                                RayCounts& counts) const {
-  SampleContext ctx(x, y, sample, seed_, counts);
-  // The lens sample is the sample's first two numbers: drawn only when there is a lens, so a
-  // pinhole camera leaves every number to the tracer.
+Color PixelSampler::traceSample(const Camera& camera, const RayTracer& tracer, SampleContext& ctx,
+                                double px, double py) const {
+  // The lens point takes the sample's next two numbers, only when there is a lens, so a pinhole
+  // camera leaves them to the tracer.
   const Sample2 lens = camera.aperture() > 0 ? squareToDisk(ctx.random.next2D()) : Sample2{};
-  ++counts.primary;
+  return traceSample(camera, tracer, ctx, px, py, lens);
+}
+
+Color PixelSampler::traceSample(const Camera& camera, const RayTracer& tracer, SampleContext& ctx,
+                                double px, double py, const Sample2& lens) const {
+  ++ctx.counts.primary;
   return tracer.traceRay(camera.ray(px, py, lens), ctx);
 }
 
 Color CenterSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
                                 RayCounts& counts) const {
-  return traceSample(camera, tracer, x, y, 0, x + 0.5, y + 0.5, counts);
+  SampleContext ctx = context(x, y, 0, counts);
+  return traceSample(camera, tracer, ctx, x + 0.5, y + 0.5);
 }
 
 RayCounts renderBlock(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,

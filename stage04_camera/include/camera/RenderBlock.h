@@ -59,11 +59,19 @@ class PixelSampler {
   std::uint64_t seed() const noexcept { return seed_; }
 
  protected:
-  /// One sample: the camera ray through the image point (px, py) of pixel (x, y), sample
-  /// `sample` — with a lens sample drawn from the sample's random numbers when the camera has an
-  /// aperture — traced and counted as one primary ray.
-  Color traceSample(const Camera& camera, const RayTracer& tracer, int x, int y,
-                    std::uint32_t sample, double px, double py, RayCounts& counts) const;
+  /// The context of sample `sample` of pixel (x, y) in this render: its numbers are
+  /// RandomStream(seed, x, y, sample), its rays are counted in counts.
+  SampleContext context(int x, int y, std::uint32_t sample, RayCounts& counts) const noexcept {
+    return SampleContext(x, y, sample, seed_, counts);
+  }
+  /// Traces the sample ctx: the camera ray through the image point (px, py) — with a lens point
+  /// drawn from the sample's next two numbers when the camera has an aperture — counted as one
+  /// primary ray. A sampler that jitters the image point draws its jitter from ctx first.
+  Color traceSample(const Camera& camera, const RayTracer& tracer, SampleContext& ctx, double px,
+                    double py) const;
+  /// The same with the lens point given (a point of the unit disk; ignored without an aperture).
+  Color traceSample(const Camera& camera, const RayTracer& tracer, SampleContext& ctx, double px,
+                    double py, const Sample2& lens) const;
 
  private:
   std::uint64_t seed_;

@@ -1,0 +1,73 @@
+#pragma once
+/// @file BeamTracer.h
+/// The first mini project's tracer: the Whitted tracer whose glossy surfaces and diffused glass
+/// cast beams of secondary rays, and whose lights with a size cast soft shadows.
+
+#include <cstdint>
+#include <vector>
+
+#include "glossy/GlossyScene.h"
+#include "glossy/RayBeam.h"
+#include "reflections/WhittedTracer.h"
+
+namespace rt {
+
+/// Where beams are cast.
+enum class BeamDepth {
+  FirstBounce,  ///< only from the primary hit (the seed's choice, and the default)
+  EveryBounce,  ///< from every hit of the recursion
+};
+
+/// The beam tracer's own settings.
+struct BeamTracerSettings {
+  BeamDepth beamDepth = BeamDepth::FirstBounce;
+};
+
+/// WhittedTracer plus ray beams and soft shadows (tracer `beams`).
+///
+///   secondary ray of a material with a beam  →  the average of the beam's rays' colours
+///                                               (RayBeam.h), each one the Whitted tracer's
+///   light with a size (radius r, S samples)  →  the transmittance averaged over S shadow rays
+///                                               to points of the disk of radius r centred on
+///                                               the light and facing the shaded point
+///
+/// The light's intensity and direction (the Phong terms) stay those of its centre: only its
+/// visibility is sampled, which is what makes a shadow soft. The disk's S points are a
+/// Fibonacci lattice over the unit square (point k at ((k + ½)/S, frac(k·φ⁻¹))), shifted by one
+/// random offset per shading point (a Cranley–Patterson rotation: every point uniform, the set
+/// evenly spread for any S), mapped to the disk by the concentric mapping.
+///
+/// Every random number comes from the sample context: the image is a pure function of the scene,
+/// the settings and the seed.
+class BeamTracer : public WhittedTracer {
+ public:
+  /// @param scene must outlive the tracer.
+  /// @throws what scene.validate() throws; std::invalid_argument for invalid settings.
+  explicit BeamTracer(const GlossyScene& scene, const Intersectable* accelerator = nullptr,
+                      const WhittedSettings& whitted = {}, const BeamTracerSettings& beams = {},
+                      const RayOffset& offset = RayOffset{});
+
+  const BeamTracerSettings& beamSettings() const { return beams_; }
+
+ protected:
+  /// A beam instead of one ray when the material blurs this kind of ray and the depth setting
+  /// allows one here; else the Whitted tracer's one ray.
+  Color secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind, int level,
+                       const Double3& kkx, SampleContext& ctx) const override;
+
+  /// Soft shadows for a light with a size; else the shadow tracer's one shadow ray.
+  Double3 transmittance(const HitContext& h, std::uint32_t light, const LightSample& sample,
+                        const Double3& k, SampleContext& ctx) const override;
+
+ private:
+  const GlossyScene& glossy_;
+  BeamTracerSettings beams_;
+  /// Per appearance row (all rows, computed once): its blur.
+  std::vector<Blur> blurOfRow_;
+  /// Per light (all lights, computed once): its size, and its centre (for point and spot
+  /// lights).
+  std::vector<LightSize> sizeOfLight_;
+  std::vector<Point> centreOfLight_;
+};
+
+}  // namespace rt

@@ -1,0 +1,149 @@
+#include "glossy/Samplers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "camera/Camera.h"
+
+namespace rt {
+
+namespace {
+
+constexpr double INV_PHI = 0.6180339887498949;  // (√5 − 1)/2
+
+/// x − floor(x) for x >= 0.
+double fraction(double x) noexcept { return x - std::floor(x); }
+
+/// A dimension far beyond what a path uses, for the per-cell lens shift: read with uniform(), a
+/// pure function of the cell's stream, whatever its samples draw.
+constexpr std::uint32_t LENS_SHIFT_DIMENSION = 0xfffffff0u;
+
+void requireRange(int value, int lo, int hi, const char* what, const char* name) {
+  if (value < lo || value > hi) {
+    throw std::invalid_argument(std::string(what) + ": " + name + " must be between " +
+                                std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+                                std::to_string(value));
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// JitteredSampler
+
+JitteredSampler::JitteredSampler(int grid, int lensSamples, std::uint64_t seed)
+    : PixelSampler(seed), grid_(grid), lensSamples_(lensSamples) {
+  requireRange(grid, 1, MAX_GRID, "JitteredSampler", "grid");
+  requireRange(lensSamples, 1, MAX_LENS_SAMPLES, "JitteredSampler", "lensSamples");
+}
+
+Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
+                                  RayCounts& counts) const {
+  const bool lens = camera.aperture() > 0;
+  const int n = grid_, lensCount = lens ? lensSamples_ : 1;
+  Double3 sum;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const auto cell = static_cast<std::uint32_t>((j * n + i) * lensCount);
+      // One shift of the lens lattice per cell, from the cell's first sample's stream.
+      const RandomStream cellStream(seed(), static_cast<std::uint32_t>(x),
+                                    static_cast<std::uint32_t>(y), cell);
+      const Sample2 shift{cellStream.uniform(LENS_SHIFT_DIMENSION),
+                          cellStream.uniform(LENS_SHIFT_DIMENSION + 1)};
+      for (int l = 0; l < lensCount; ++l) {
+        SampleContext ctx = context(x, y, cell + static_cast<std::uint32_t>(l), counts);
+        double px = x + 0.5, py = y + 0.5;
+        if (n > 1) {
+          const Sample2 p = jitteredCell(i, j, n, ctx.random);
+          px = x + p.u;
+          py = y + p.v;
+        }
+        const Sample2 onLens =
+            lens ? squareToDisk({fraction((l + 0.5) / lensCount + shift.u),
+                                 fraction(l * INV_PHI + shift.v)})
+                 : Sample2{};
+        sum = sum + traceSample(camera, tracer, ctx, px, py, onLens).rgb();
+      }
+    }
+  }
+  return Color::unchecked(sum / (n * n * lensCount));
+}
+
+// ---------------------------------------------------------------------------------------------
+// AdaptiveSampler
+
+/// A square of the pixel's lattice: its corner (a, b) and side, in lattice steps.
+struct AdaptiveSampler::Square {
+  int a, b, side;
+};
+
+/// The lattice points of one pixel traced so far (on the stack: at most 17 x 17 of them).
+struct AdaptiveSampler::Lattice {
+  static constexpr int MAX_SIDE = (1 << MAX_DEPTH) + 1;
+  const AdaptiveSampler& sampler;
+  const Camera& camera;
+  const RayTracer& tracer;
+  int x, y, steps;
+  RayCounts& counts;
+  bool traced[MAX_SIDE * MAX_SIDE] = {};
+  Double3 colour[MAX_SIDE * MAX_SIDE] = {};
+
+  /// The colour at lattice point (a, b): traced the first time it is asked for.
+  const Double3& at(int a, int b) {
+    const int index = b * (steps + 1) + a;
+    if (!traced[index]) {
+      SampleContext ctx = sampler.context(x, y, static_cast<std::uint32_t>(index), counts);
+      colour[index] = sampler
+                          .traceSample(camera, tracer, ctx, x + static_cast<double>(a) / steps,
+                                       y + static_cast<double>(b) / steps)
+                          .rgb();
+      traced[index] = true;
+    }
+    return colour[index];
+  }
+};
+
+AdaptiveSampler::AdaptiveSampler(double threshold, int depthLimit, std::uint64_t seed)
+    : PixelSampler(seed), threshold_(threshold), depthLimit_(depthLimit) {
+  if (!(std::isfinite(threshold) && threshold >= 0)) {
+    throw std::invalid_argument(
+        "AdaptiveSampler: threshold must be a non-negative finite number, got " +
+        formatNumber(threshold));
+  }
+  requireRange(depthLimit, 0, MAX_DEPTH, "AdaptiveSampler", "depthLimit");
+}
+
+Double3 AdaptiveSampler::refine(Lattice& lattice, const Square& sq) const {
+  const int a = sq.a, b = sq.b, s = sq.side;
+  const Double3 c00 = lattice.at(a, b), c10 = lattice.at(a + s, b), c01 = lattice.at(a, b + s),
+                c11 = lattice.at(a + s, b + s);
+  const Double3 mean = (c00 + c10 + c01 + c11) / 4;
+  const auto far = [&](const Double3& c) {
+    const Double3 d = c - mean;
+    return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}) > threshold_;
+  };
+  if (s == 1 || !(far(c00) || far(c10) || far(c01) || far(c11))) return mean;
+  const int h = s / 2;
+  return (refine(lattice, {a, b, h}) + refine(lattice, {a + h, b, h}) +
+          refine(lattice, {a, b + h, h}) + refine(lattice, {a + h, b + h, h})) /
+         4;
+}
+
+Color AdaptiveSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
+                                  RayCounts& counts) const {
+  const int steps = 1 << depthLimit_;
+  Lattice lattice{*this, camera, tracer, x, y, steps, counts};
+  return Color::unchecked(refine(lattice, {0, 0, steps}));
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::unique_ptr<PixelSampler> makePixelSampler(const SamplingSettings& s) {
+  if (s.adaptive) return std::make_unique<AdaptiveSampler>(s.adaptiveThreshold, s.adaptiveDepth,
+                                                           s.seed);
+  return std::make_unique<JitteredSampler>(s.samples, s.lensSamples, s.seed);
+}
+
+}  // namespace rt
