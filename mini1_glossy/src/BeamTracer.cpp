@@ -30,11 +30,11 @@ BeamTracer::BeamTracer(const GlossyScene& scene, const Intersectable* accelerato
     blurOfRow_.push_back(scene.blurOfRow(row));
   for (std::uint32_t i = 0; i < scene.lights.size(); ++i) {
     sizeOfLight_.push_back(scene.sizeOfLight(i));
-    centreOfLight_.push_back(std::visit(
-        Overloaded{[](const DirectionalLight&) { return Point::ZERO; },
-                   [](const PointLight& l) { return l.position; },
-                   [](const SpotLight& l) { return l.position; }},
-        scene.lights[i]));
+    centreOfLight_.push_back(
+        std::visit(Overloaded{[](const DirectionalLight&) { return Point::ZERO; },
+                              [](const PointLight& l) { return l.position; },
+                              [](const SpotLight& l) { return l.position; }},
+                   scene.lights[i]));
   }
 }
 
@@ -49,12 +49,12 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
   // the beam goes to: samples on the other side are dropped) and is traced as the Whitted
   // tracer traces one.
   Double3 sum;
-  const int count = forEachBeamRay(secondary.direction(), from.normal, beam, ctx.random,
-                                   [&](const Vector& dir) {
-                                     const Color c = WhittedTracer::secondaryColor(
-                                         from, Ray(secondary.head(), dir), kind, level, kkx, ctx);
-                                     sum = sum + c.rgb();
-                                   });
+  const int count =
+      forEachBeamRay(secondary.direction(), from.normal, beam, ctx.random, [&](const Vector& dir) {
+        const Color c =
+            WhittedTracer::secondaryColor(from, Ray(secondary.head(), dir), kind, level, kkx, ctx);
+        sum = sum + c.rgb();
+      });
   return Color::unchecked(sum / count);
 }
 
@@ -80,8 +80,8 @@ Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t light,
       sum = sum + Double3::ONE;
       continue;
     }
-    sum = sum + shadowQuery(h.point, h.normal, Vector::unchecked(toLight / distance), distance,
-                            k, ctx.counts)
+    sum = sum + shadowQuery(h.point, h.normal, Vector::unchecked(toLight / distance), distance, k,
+                            ctx.counts)
                     .factor;
   }
   return sum / n;

@@ -60,10 +60,9 @@ Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
           px = x + p.u;
           py = y + p.v;
         }
-        const Sample2 onLens =
-            lens ? squareToDisk({fraction((l + 0.5) / lensCount + shift.u),
-                                 fraction(l * INV_PHI + shift.v)})
-                 : Sample2{};
+        const Sample2 onLens = lens ? squareToDisk({fraction((l + 0.5) / lensCount + shift.u),
+                                                    fraction(l * INV_PHI + shift.v)})
+                                    : Sample2{};
         sum = sum + traceSample(camera, tracer, ctx, px, py, onLens).rgb();
       }
     }
@@ -141,8 +140,8 @@ Color AdaptiveSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
 // ---------------------------------------------------------------------------------------------
 
 std::unique_ptr<PixelSampler> makePixelSampler(const SamplingSettings& s) {
-  if (s.adaptive) return std::make_unique<AdaptiveSampler>(s.adaptiveThreshold, s.adaptiveDepth,
-                                                           s.seed);
+  if (s.adaptive)
+    return std::make_unique<AdaptiveSampler>(s.adaptiveThreshold, s.adaptiveDepth, s.seed);
   return std::make_unique<JitteredSampler>(s.samples, s.lensSamples, s.seed);
 }
 

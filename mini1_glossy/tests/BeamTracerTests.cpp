@@ -65,9 +65,9 @@ TEST(BeamTracerTests, glossyBeamConvergesToTheAnalyticFraction) {
   const std::uint32_t glossy = s.addAppearance(Color::BLACK, mirror, {{d, r, 32}, {}});
   s.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)), glossy);
   const double x0 = c * H / d;
-  s.add(Polygon{Point(x0, -1000, H), Point(1000, -1000, H), Point(1000, 1000, H),
-                Point(x0, 1000, H)},
-        Color(0, 0, 1000));
+  s.add(
+      Polygon{Point(x0, -1000, H), Point(1000, -1000, H), Point(1000, 1000, H), Point(x0, 1000, H)},
+      Color(0, 0, 1000));
   const BeamTracer tracer(s, nullptr, {.maxLevel = 2, .minK = 0});
   const double fraction =
       (r * r * std::acos(c / r) - c * std::sqrt(r * r - c * c)) / (std::numbers::pi * r * r);
@@ -136,8 +136,7 @@ TEST(BeamTracerTests, diffusedGlassBlursWhatIsBehindIt) {
   const auto pane = [&](const Blur& blur) {
     GlossyScene g;
     const std::uint32_t row = g.addAppearance(Color::BLACK, glass, blur);
-    g.add(Polygon{Point(-50, -50, 5), Point(50, -50, 5), Point(50, 50, 5), Point(-50, 50, 5)},
-          row);
+    g.add(Polygon{Point(-50, -50, 5), Point(50, -50, 5), Point(50, 50, 5), Point(-50, 50, 5)}, row);
     g.add(Polygon{Point(-50, -50, 0), Point(0, -50, 0), Point(0, 50, 0), Point(-50, 50, 0)},
           Color(200, 200, 200));
     return g;

@@ -118,9 +118,8 @@ TEST(SoftShadowTests, sizesAreValidated) {
     BeamTracer tracer(bad);
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(
-        "GlossyScene: lightSizes[0]: a directional light has no position, so no radius",
-        e.what());
+    EXPECT_STREQ("GlossyScene: lightSizes[0]: a directional light has no position, so no radius",
+                 e.what());
   }
 }
 

@@ -53,10 +53,12 @@ double Vector::length() const { return std::sqrt(lengthSquared()); }
 
 Vector Vector::normalized() const noexcept {
   const double l2 = lengthSquared();
-  if (l2 < std::numeric_limits<double>::infinity())
+  if (l2 >= std::numeric_limits<double>::min() && l2 < std::numeric_limits<double>::infinity())
     return Vector(xyz_ / std::sqrt(l2), Unchecked{});
-  // |v|² overflowed (components beyond ~1e154): scale by the largest component first, or the
-  // division by an infinite length would make the zero vector.
+  // |v|² overflowed (components beyond ~1e154) or underflowed (below ~1e-154, reachable through
+  // Vector::unchecked, say the normal of a sphere of radius 1e-170): scale by the largest
+  // component first, or the division by an infinite (or zero) length would make the zero vector
+  // (or NaN).
   const Double3 scaled = xyz_ / std::max({std::abs(xyz_.x), std::abs(xyz_.y), std::abs(xyz_.z)});
   return Vector(scaled / std::sqrt(scaled.lengthSquared()), Unchecked{});
 }

@@ -60,9 +60,8 @@ TEST(VectorTests, subtract) {
   // =============== Boundary Values Tests ==================
   // TC11: a vector minus itself is zero: throws, naming the operation
   const Vector v(1, 2, 3);
-  EXPECT_THAT([&] { (void)(v - v); },
-              ThrowsMessage<std::invalid_argument>(
-                  AllOf(HasSubstr("Vector subtraction"), HasSubstr("(1,2,3)"))));
+  EXPECT_THAT([&] { (void)(v - v); }, ThrowsMessage<std::invalid_argument>(AllOf(
+                                          HasSubstr("Vector subtraction"), HasSubstr("(1,2,3)"))));
 }
 
 TEST(VectorTests, negate) {
@@ -144,6 +143,12 @@ TEST(VectorTests, normalized) {
   EXPECT_DOUBLE_EQ(huge.x(), std::sqrt(0.5));
   EXPECT_DOUBLE_EQ(huge.y(), -std::sqrt(0.5));
   EXPECT_EQ(huge.z(), 0.0);
+  // TC13: components so small (1e-170, only reachable through Vector::unchecked) that the
+  // squared length underflows to zero still normalise (not to NaN)
+  const Vector tiny = Vector::unchecked(Double3(3e-170, 0, -4e-170)).normalized();
+  EXPECT_DOUBLE_EQ(tiny.x(), 0.6);
+  EXPECT_EQ(tiny.y(), 0.0);
+  EXPECT_DOUBLE_EQ(tiny.z(), -0.8);
 }
 
 }  // namespace

@@ -20,8 +20,7 @@ TEST(GeometryTests, normalAtDispatchesToEveryShape) {
   // TC01: sphere
   expectVector(normalAt(Geometry(Sphere(Point(0, 0, 0), 2)), Point(0, 2, 0)), 0, 1, 0);
   // TC02: plane
-  expectVector(normalAt(Geometry(Plane(Point(0, 0, 0), Vector(0, 0, 3))), Point(4, 4, 0)), 0, 0,
-               1);
+  expectVector(normalAt(Geometry(Plane(Point(0, 0, 0), Vector(0, 0, 3))), Point(4, 4, 0)), 0, 0, 1);
   // TC03: triangle
   expectVector(normalAt(Geometry(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0))),
                         Point(0.2, 0.2, 0)),
@@ -70,18 +69,22 @@ TEST(GeometryTests, hitNormalIsNormalAtWithoutThrowing) {
   const Geometry tiny = Sphere(Point(0, 0, 0), 1e-14);
   EXPECT_THROW(normalAt(tiny, Point(1e-14, 0, 0)), std::invalid_argument);
   expectVector(hitNormal(tiny, Point(1e-14, 0, 0), fallback), 1, 0, 0);
+  // TC14: a sphere so small (1e-170) that p - centre's squared length underflows: still the unit
+  // normal, not NaN
+  const Geometry tinier = Sphere(Point(0, 0, 0), 1e-170);
+  expectVector(hitNormal(tinier, Point(0, -1e-170, 0), fallback), 0, -1, 0);
 }
 
 TEST(GeometryTests, shapeName) {
   // TC01: the course's lower-case name of each kind
   EXPECT_EQ(std::string(shapeName(Geometry(Sphere(Point(0, 0, 0), 1)))), "sphere");
   EXPECT_EQ(std::string(shapeName(Geometry(Plane(Point(0, 0, 0), Vector(0, 0, 1))))), "plane");
-  EXPECT_EQ(std::string(shapeName(
-                Geometry(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0))))),
-            "triangle");
-  EXPECT_EQ(std::string(shapeName(
-                Geometry(Polygon({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)})))),
-            "polygon");
+  EXPECT_EQ(
+      std::string(shapeName(Geometry(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0))))),
+      "triangle");
+  EXPECT_EQ(
+      std::string(shapeName(Geometry(Polygon({Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)})))),
+      "polygon");
   EXPECT_EQ(std::string(shapeName(Geometry(Tube(1, kZAxis)))), "tube");
   EXPECT_EQ(std::string(shapeName(Geometry(Cylinder(1, kZAxis, 1)))), "cylinder");
 }

@@ -310,14 +310,20 @@ Camera CameraBuilder::build() const {
   // Rays go from p0 through the view plane: its centre must be a different point than p0 in
   // floating point, or every ray's direction would be zero (a location of 1e20 with a view
   // plane at distance 1, say). Checked here so that making a ray never has to.
-  const Double3 centre = spec_.location.xyz() + c.vTo_.xyz() * spec_.vpDistance;
-  if ((centre - spec_.location.xyz()).isZero()) {
-    throw std::invalid_argument(std::string(OP) + ": the view plane at distance " +
-                                formatNumber(spec_.vpDistance) + " from the location " +
-                                spec_.location.xyz().str() +
-                                " rounds to the location itself (the distance is too small for "
-                                "coordinates this large)");
-  }
+  // The same holds for a lens's focal plane, where every lens ray aims.
+  const auto requireDistinct = [&](double distance, const char* plane) {
+    const Double3 centre = spec_.location.xyz() + c.vTo_.xyz() * distance;
+    if ((centre - spec_.location.xyz()).isZero()) {
+      throw std::invalid_argument(std::string(OP) + ": the " + plane + " at distance " +
+                                  formatNumber(distance) + " from the location " +
+                                  spec_.location.xyz().str() +
+                                  " rounds to the location itself (the distance is too small for "
+                                  "coordinates this large)");
+    }
+  };
+  requireDistinct(spec_.vpDistance, "view plane");
+  if (spec_.aperture > 0 && spec_.focalDistance > 0)
+    requireDistinct(spec_.focalDistance, "focal plane");
   c.pixelWidth_ = spec_.vpWidth / spec_.nX;
   c.pixelHeight_ = spec_.vpHeight / spec_.nY;
   c.focal_ = spec_.focalDistance > 0 ? spec_.focalDistance : spec_.vpDistance;

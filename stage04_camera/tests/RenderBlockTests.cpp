@@ -108,6 +108,55 @@ TEST(CameraRayTests, thinLens) {
   // TC13: a negative or non-finite aperture or focal distance is refused, naming it
   EXPECT_THROW(view(4, 4).setAperture(-1), std::invalid_argument);
   EXPECT_THROW(view(4, 4).setFocalDistance(std::nan("")), std::invalid_argument);
+  // TC14: a focal plane so close to a far location that it rounds to the location: refused at
+  // build (its rays would have no direction)
+  const auto far = [] {
+    return Camera::builder()
+        .setLocation(Point(1e6, 1e6, 1e6))
+        .setDirection(Vector(0, 0, -1), Vector(0, 1, 0))
+        .setVpSize(4, 4)
+        .setVpDistance(10)
+        .setResolution(4, 4);
+  };
+  try {
+    (void)far().setAperture(1).setFocalDistance(1e-20).build();
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(
+        "Camera::Builder: the focal plane at distance 1e-20 from the location (1e+06,1e+06,"
+        "1e+06) rounds to the location itself (the distance is too small for coordinates this "
+        "large)",
+        e.what());
+  }
+  // TC15: the same focal distance without an aperture is never used: accepted
+  EXPECT_NO_THROW((void)far().setFocalDistance(1e-20).build());
+}
+
+TEST(CameraRayTests, viewPlaneRoundingToTheLocationIsRefused) {
+  // TC11: a view plane at distance 1e-10 from a location at 1e8: p0 + d·vTo == p0 in doubles
+  try {
+    (void)Camera::builder()
+        .setLocation(Point(0, 0, 1e8))
+        .setDirection(Vector(0, 0, -1), Vector(0, 1, 0))
+        .setVpSize(1, 1)
+        .setVpDistance(1e-10)
+        .setResolution(2, 2)
+        .build();
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(
+        "Camera::Builder: the view plane at distance 1e-10 from the location (0,0,1e+08) "
+        "rounds to the location itself (the distance is too small for coordinates this large)",
+        e.what());
+  }
+  // TC12: a little farther it is representable: accepted
+  EXPECT_NO_THROW((void)Camera::builder()
+                      .setLocation(Point(0, 0, 1e8))
+                      .setDirection(Vector(0, 0, -1), Vector(0, 1, 0))
+                      .setVpSize(1, 1)
+                      .setVpDistance(1e-5)
+                      .setResolution(2, 2)
+                      .build());
 }
 
 TEST(RenderBlockTests, centreSamplerTracesEachPixelOnce) {

@@ -47,8 +47,8 @@ enum class SecondaryKind { Reflected, Refracted };
 class WhittedTracer : public ShadowTracer {
  public:
   /// @param scene must outlive the tracer.
-  /// @throws std::logic_error when scene.appearances and scene.geometries differ in size;
-  ///         std::invalid_argument for invalid settings.
+  /// @throws what scene.validate() throws (shapes without a row of the appearance table,
+  ///         invalid materials or lights); std::invalid_argument for invalid settings.
   explicit WhittedTracer(const LitScene& scene, const Intersectable* accelerator = nullptr,
                          const WhittedSettings& settings = {},
                          const RayOffset& offset = RayOffset{});
