@@ -1,0 +1,86 @@
+// Mini project 1: every random number depends only on (seed, pixel, sample, dimension), so a
+// sampled image is the same however it is cut into blocks, a pixel rendered alone has the colour
+// it has in the whole image, and the seed changes the noise.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+
+#include "camera/Camera.h"
+#include "glossy/BeamTracer.h"
+#include "glossy/Galaxy.h"
+#include "glossy/Samplers.h"
+
+namespace rt {
+namespace {
+
+bool sameBits(const Color& a, const Color& b) {
+  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
+}
+
+/// A small galaxy (7 arms of 12), with its glass blurring (beams), sized lights (soft shadows),
+/// seen from "inside" at 24 x 14 pixels.
+struct Fixture {
+  GalaxySetup g = [] {
+    GalaxyParams p;
+    p.arms = 7;
+    p.perArm = 12;
+    GalaxySetup setup = galaxy(p);
+    setup.scene.lightSizes.assign(setup.scene.lights.size(), LightSize{1.5, 4});
+    for (Blur& b : setup.scene.blur)
+      if (b != Blur{}) b = Blur{{12, 0.2, 3}, {12, 0.2, 3}};
+    return setup;
+  }();
+  BeamTracer tracer{g.scene};
+  Camera camera = [this] {
+    CameraSpec spec = g.views[2].camera;  // "inside"
+    spec.nX = 24;
+    spec.nY = 14;
+    spec.aperture = 0.3;
+    spec.focalDistance = 28;
+    return spec.builder().build();
+  }();
+};
+
+TEST(DeterminismTests, blocksPixelsAndSeeds) {
+  const Fixture f;
+  for (const SamplingSettings& settings :
+       {SamplingSettings{.samples = 2, .lensSamples = 2, .seed = 5},
+        SamplingSettings{
+            .adaptive = true, .adaptiveThreshold = 8, .adaptiveDepth = 2, .seed = 5}}) {
+    const std::unique_ptr<PixelSampler> sampler = makePixelSampler(settings);
+    // ============ Equivalence Partitions Tests ==============
+    // TC01: the whole image in one block, and the same image in 5 x 5 tiles rendered last tile
+    // first: the same bits, and the same ray counts
+    Image whole(24, 14), tiled(24, 14);
+    const RayCounts a = renderBlock(f.camera, f.tracer, *sampler, {0, 0, 24, 14}, whole);
+    RayCounts b;
+    for (int y0 = 10; y0 >= 0; y0 -= 5)
+      for (int x0 = 20; x0 >= 0; x0 -= 5)
+        b += renderBlock(f.camera, f.tracer, *sampler,
+                         {x0, y0, std::min(x0 + 5, 24), std::min(y0 + 5, 14)}, tiled);
+    for (int y = 0; y < 14; ++y)
+      for (int x = 0; x < 24; ++x)
+        ASSERT_TRUE(sameBits(whole.pixel(x, y), tiled.pixel(x, y))) << x << "," << y;
+    EXPECT_EQ(a, b);
+    EXPECT_GT(a.secondary, a.primary);  // the glass's beams were cast
+    EXPECT_GT(a.shadow, a.primary);     // and the soft shadows' rays
+    // TC02: one pixel rendered alone has its colour in the whole image
+    Image alone(24, 14);
+    renderBlock(f.camera, f.tracer, *sampler, {13, 7, 14, 8}, alone);
+    EXPECT_TRUE(sameBits(whole.pixel(13, 7), alone.pixel(13, 7)));
+    // TC03: another seed changes the noise: some pixel differs
+    SamplingSettings other = settings;
+    other.seed = 6;
+    Image reseeded(24, 14);
+    renderBlock(f.camera, f.tracer, *makePixelSampler(other), {0, 0, 24, 14}, reseeded);
+    int different = 0;
+    for (int y = 0; y < 14; ++y)
+      for (int x = 0; x < 24; ++x)
+        different += sameBits(whole.pixel(x, y), reseeded.pixel(x, y)) ? 0 : 1;
+    EXPECT_GT(different, 0);
+  }
+}
+
+}  // namespace
+}  // namespace rt
