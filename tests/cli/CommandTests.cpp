@@ -363,20 +363,5 @@ TEST(OutputTests, checkOutputWritable) {
   EXPECT_EQ(errorOf("rt-check-output-test.png"), "(no error)");
 }
 
-TEST(OutputTests, writeFileAtomically) {
-  const std::string dir = test::freshDirectory("writeFileAtomically");
-  // TC01: a new file gets the text, and no temporary file remains
-  writeFileAtomically(dir + "/a.json", "{}\n");
-  EXPECT_EQ(test::readFile(dir + "/a.json"), "{}\n");
-  // TC02: an existing file is replaced
-  writeFileAtomically(dir + "/a.json", "{\"x\": 1}\n");
-  EXPECT_EQ(test::readFile(dir + "/a.json"), "{\"x\": 1}\n");
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
-                          std::filesystem::directory_iterator()),
-            1);
-  // TC11: a directory that does not exist: an error naming the path
-  EXPECT_THROW(writeFileAtomically(dir + "/missing/a.json", "{}"), std::runtime_error);
-}
-
 }  // namespace
 }  // namespace rt::cli

@@ -2,6 +2,7 @@
 #include <ostream>
 
 #include "CommandTable.h"
+#include "camera/AtomicFile.h"
 #include "cli/BuiltinScenes.h"
 #include "scenefile/SceneFile.h"
 

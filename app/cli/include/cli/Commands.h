@@ -61,10 +61,6 @@ std::string defaultOutputPath(std::string_view scene);
 /// temporary file that is removed again). @throws UsageError naming the path and the reason.
 void checkOutputWritable(const std::string& path, std::string_view what = "-o");
 
-/// Writes text to path through a temporary file beside it and a rename, so that a failure
-/// leaves any existing file untouched. @throws std::runtime_error naming the path.
-void writeFileAtomically(const std::string& path, std::string_view text);
-
 /// The JSON that `rt probe` prints for ray:
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
 /// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals
