@@ -104,22 +104,6 @@ TEST(ArgParserTests, parseArgsRefusesBadUsage) {
   EXPECT_EQ(usageError({"s", "-x"}), "unknown option '-x' for rt sample (see rt sample --help)");
 }
 
-TEST(ArgParserTests, nearestName) {
-  const std::vector<std::string_view> known{"render", "probe", "export", "list"};
-  // ============ Equivalence Partitions Tests ==============
-  // TC01: one typo away
-  EXPECT_EQ(nearestName("rendr", known), "render");
-  // TC02: nothing close
-  EXPECT_EQ(nearestName("zzzzzz", known), "");
-  // =============== Boundary Values Tests ==================
-  // TC11: exactly two edits away is still a typo
-  EXPECT_EQ(nearestName("prbo", known), "probe");
-  // TC12: three edits away is not
-  EXPECT_EQ(nearestName("pxxxe", known), "");
-  // TC13: a word no longer than its distance suggests nothing ("ls" is 2 edits from "list")
-  EXPECT_EQ(nearestName("ls", known), "");
-}
-
 TEST(ArgParserTests, formatHelpListsEveryOption) {
   const std::string help = formatHelp(sampleCommand());
   // TC01: usage line, summary, one line per option (aliases and values included), details

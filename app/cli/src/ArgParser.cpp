@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "common/NearestName.h"
+
 namespace rt::cli {
 
 namespace {
@@ -30,21 +32,6 @@ std::string seeHelp(const CommandSpec& command) {
   return " (see " + commandLabel(command) + " --help)";
 }
 
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 const std::string* ParsedArgs::value(std::string_view name) const {
@@ -55,19 +42,6 @@ const std::string* ParsedArgs::value(std::string_view name) const {
 const std::vector<std::string>* ParsedArgs::values(std::string_view name) const {
   auto it = options.find(name);
   return it == options.end() ? nullptr : &it->second;
-}
-
-std::string nearestName(std::string_view word, std::span<const std::string_view> known) {
-  std::string best;
-  std::size_t bestDistance = 3;  // farther than 2 edits is not a typo
-  for (std::string_view k : known) {
-    const std::size_t d = editDistance(word, k);
-    if (d < bestDistance && d < word.size()) {
-      bestDistance = d;
-      best = std::string(k);
-    }
-  }
-  return best;
 }
 
 ParsedArgs parseArgs(const CommandSpec& command, std::span<const std::string> args) {
@@ -99,11 +73,8 @@ ParsedArgs parseArgs(const CommandSpec& command, std::span<const std::string> ar
       std::vector<std::string_view> known;
       for (const OptionSpec& o : command.options) known.push_back(o.name);
       known.push_back(kHelpName);
-      std::string message =
-          "unknown option '" + std::string(name) + "' for " + commandLabel(command);
-      if (const std::string near = nearestName(name, known); !near.empty())
-        message += "; did you mean '" + near + "'?";
-      throw UsageError(message + seeHelp(command));
+      throw UsageError("unknown option '" + std::string(name) + "' for " + commandLabel(command) +
+                       didYouMean(name, known) + seeHelp(command));
     }
     const std::string key(spec->name);
     if (parsed.has(key)) throw UsageError("option " + key + " given twice" + seeHelp(command));

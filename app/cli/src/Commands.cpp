@@ -11,6 +11,7 @@
 #include "cli/BuiltinScenes.h"
 #include "cli/Tracers.h"
 #include "cli/Values.h"
+#include "common/NearestName.h"
 #include "scenefile/SceneFile.h"
 
 #ifndef RT_VERSION
@@ -99,10 +100,8 @@ int runRt(std::span<const std::string> args, const Io& io) {
     }
     std::vector<std::string_view> names;
     for (const Command& c : commands()) names.push_back(c.spec.name);
-    std::string message = "unknown command '" + first + "'";
-    if (const std::string near = nearestName(first, names); !near.empty())
-      message += "; did you mean '" + near + "'?";
-    io.err << "rt: " << message << " (see rt --help)\n";
+    io.err << "rt: unknown command '" << first << "'" << didYouMean(first, names)
+           << " (see rt --help)\n";
     return EXIT_BAD_INPUT;
   } catch (const UsageError& e) {
     io.err << "rt: " << e.what() << "\n";
@@ -127,10 +126,8 @@ const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view 
   if (const BuiltinScene* builtin = findBuiltinScene(name)) return *builtin;
   std::vector<std::string_view> names;
   for (const BuiltinScene& s : builtinScenes()) names.push_back(s.name);
-  std::string message = "unknown scene '" + std::string(name) + "'";
-  if (const std::string near = nearestName(name, names); !near.empty())
-    message += "; did you mean '" + near + "'?";
-  throw UsageError(message + " (" + std::string(hint) + ")");
+  throw UsageError("unknown scene '" + std::string(name) + "'" + didYouMean(name, names) + " (" +
+                   std::string(hint) + ")");
 }
 
 SceneDocument loadSceneArgument(std::string_view scene) {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "cli/ArgParser.h"
+#include "common/NearestName.h"
 #include "lighting/PhongTracer.h"
 #include "reflections/WhittedTracer.h"
 #include "shadows/ShadowTracer.h"
@@ -43,10 +44,8 @@ const TracerKind& findTracer(std::string_view name, std::string_view what) {
     if (t.name == name) return t;
     names.push_back(t.name);
   }
-  std::string message = std::string(what) + ": unknown tracer '" + std::string(name) + "'";
-  if (const std::string near = nearestName(name, names); !near.empty())
-    message += "; did you mean '" + near + "'?";
-  message += " (known:";
+  std::string message = std::string(what) + ": unknown tracer '" + std::string(name) + "'" +
+                        didYouMean(name, names) + " (known:";
   for (std::string_view n : names) message += " " + std::string(n);
   throw UsageError(message + ")");
 }

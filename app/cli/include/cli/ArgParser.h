@@ -64,8 +64,4 @@ ParsedArgs parseArgs(const CommandSpec& command, std::span<const std::string> ar
 /// `rt COMMAND --help`: usage line, summary, options, details.
 std::string formatHelp(const CommandSpec& command);
 
-/// The known name nearest to word by edit distance, or empty when none is close enough to be a
-/// likely typo (distance at most 2, and less than the word's length).
-std::string nearestName(std::string_view word, std::span<const std::string_view> known);
-
 }  // namespace rt::cli
