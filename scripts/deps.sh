@@ -11,9 +11,9 @@
 set -euo pipefail
 
 # What the build needs: compiler and build tool, CMake, GoogleTest and GoogleMock, stb (PNG
-# output) and nlohmann-json (scene files). The CMake files name the same packages when one is
-# missing.
-packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev)
+# output), nlohmann-json (scene files) and CLI11 (rt's command line). The CMake files name the
+# same packages when one is missing.
+packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev)
 
 dry_run=0
 pretend=()

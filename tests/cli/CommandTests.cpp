@@ -128,7 +128,7 @@ TEST(CommandTests, listPrintsOneLinePerSceneNameFirst) {
   // TC11: extra arguments are refused
   const Outcome extra = run({"list", "more"});
   EXPECT_EQ(extra.code, 2);
-  EXPECT_EQ(extra.err, "rt: rt list: unexpected argument 'more' (see rt list --help)\n");
+  EXPECT_EQ(extra.err, "rt: unexpected argument 'more' for rt list (see rt list --help)\n");
 }
 
 TEST(CommandTests, helpAndVersion) {
@@ -222,6 +222,20 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC13",
        {"export", "two-color", "-o", "x.txt"},
        "rt: -o: a scene file's name must end in .json; got 'x.txt'\n"},
+      // TC14: a pixel given as two arguments: the X,Y form is explained (once "rt: rt probe:
+      // unexpected argument '2'")
+      {"TC14",
+       {"probe", "two-color", "--pixel", "1", "2"},
+       "rt: --pixel takes X,Y (one argument, comma-separated), got '1' and an extra '2' (see rt "
+       "probe --help)\n"},
+      // TC15: a missing scene
+      {"TC15",
+       {"render", "--width", "8"},
+       "rt: missing SCENE for rt render (see rt render --help)\n"},
+      // TC16: a width that is a number but not an integer, in any form
+      {"TC16",
+       {"render", "two-color", "--width", "6.45e1"},
+       "rt: --width: expected an integer from 1 to 32768, got '6.45e1'\n"},
       // TC21: a width one beyond 2^15 is refused before anything is allocated
       {"TC21",
        {"render", "two-color", "--width", "32769"},
@@ -230,6 +244,10 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC22",
        {"render", "two-color", "--height", "0"},
        "rt: --height: expected an integer from 1 to 32768, got '0'\n"},
+      // TC24: 2^15 + 1 written as a JSON exponent is refused too
+      {"TC24",
+       {"render", "two-color", "--width", "3.2769e4"},
+       "rt: --width: expected an integer from 1 to 32768, got '3.2769e4'\n"},
       // TC23: --pixel one column beyond the (overridden) image
       {"TC23",
        {"probe", "two-color", "--width", "10", "--pixel", "10,0"},

@@ -1,4 +1,6 @@
 // rt export NAME [-o FILE.json]
+#include <memory>
+#include <optional>
 #include <ostream>
 
 #include "CommandTable.h"
@@ -10,10 +12,15 @@ namespace rt::cli {
 
 namespace {
 
-int exportScene(const ParsedArgs& args, const Io& io) {
-  const std::string& name = args.positional[0];
-  const BuiltinScene& scene = requireBuiltinScene(name, "rt list shows the built-in scenes");
-  const std::string* output = args.value("--output");
+/// rt export's arguments, as the command line binds them.
+struct ExportArgs {
+  std::string name;
+  std::optional<std::string> output;
+};
+
+int exportScene(const ExportArgs& args, const Io& io) {
+  const BuiltinScene& scene = requireBuiltinScene(args.name, "rt list shows the built-in scenes");
+  const std::optional<std::string>& output = args.output;
   if (output && !output->ends_with(".json"))
     throw UsageError("-o: a scene file's name must end in .json; got '" + *output + "'");
   if (output) checkOutputWritable(*output, "-o");
@@ -27,15 +34,20 @@ int exportScene(const ParsedArgs& args, const Io& io) {
 
 }  // namespace
 
-Command exportCommand() {
-  return {{"export",
-           "write a built-in scene as a JSON scene file",
-           {"NAME"},
-           {{"--output", "-o", 1, "FILE.json", "where to write it (default: standard output)"}},
-           "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
-           "built-in scene. The repository keeps every built-in scene's export in scenes/\n"
-           "(cmake --build BUILD --target export-scenes refreshes them).\n"},
-          exportScene};
+void addExportCommand(CommandLine& rt) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App& command = rt.addCommand(
+      "export", "write a built-in scene as a JSON scene file",
+      "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
+      "built-in scene. The repository keeps every built-in scene's export in scenes/\n"
+      "(cmake --build BUILD --target export-scenes refreshes them).\n",
+      [args](const Io& io) { return exportScene(*args, io); });
+  command.add_option("NAME", args->name, "a built-in scene's name");
+  command
+      .add_option_function<std::string>(
+          "-o,--output", [args](const std::string& o) { args->output = o; },
+          "where to write it (default: standard output)")
+      ->type_name("FILE.json");
 }
 
 }  // namespace rt::cli

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "camera/AtomicFile.h"
-#include "cli/ArgParser.h"
+#include "cli/CommandLine.h"
 #include "cli/Commands.h"
 
 namespace rt::cli {

@@ -1,7 +1,10 @@
 // rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y): one ray, what it hits, what it sees.
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 #include "CommandTable.h"
 #include "camera/Camera.h"
@@ -52,25 +55,33 @@ std::string jsonString(std::string_view s) {
   return out + "\"";
 }
 
-int probe(const ParsedArgs& args, const Io& io) {
-  const bool byRay = args.has("--ray"), byPixel = args.has("--pixel");
+/// rt probe's arguments, as the command line binds them.
+struct ProbeArgs {
+  std::string scene;
+  std::optional<std::pair<std::string, std::string>> ray;  ///< origin, direction
+  std::optional<std::string> pixel;
+  SceneOverrides overrides;
+};
+
+int probe(const ProbeArgs& args, const Io& io) {
+  const bool byRay = args.ray.has_value(), byPixel = args.pixel.has_value();
   if (byRay == byPixel)
     throw UsageError(std::string(byRay ? "give only one of" : "missing") +
                      " --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)");
-  SceneDocument doc = loadSceneArgument(args.positional[0]);
-  applySceneOverrides(args, doc);
+  SceneDocument doc = loadSceneArgument(args.scene);
+  applySceneOverrides(args.overrides, doc);
 
   std::optional<Ray> ray;
   if (byRay) {
-    const std::vector<std::string>& v = *args.values("--ray");
-    const Double3 origin = parseTriple(v[0], "--ray origin");
-    const Double3 direction = parseTriple(v[1], "--ray direction");
+    const auto& [originText, directionText] = *args.ray;
+    const Double3 origin = parseTriple(originText, "--ray origin");
+    const Double3 direction = parseTriple(directionText, "--ray direction");
     if (direction.isZero())
-      throw UsageError("--ray direction: must not be the zero vector, got '" + v[1] + "'");
+      throw UsageError("--ray direction: must not be the zero vector, got '" + directionText + "'");
     ray.emplace(Point(origin), Vector(direction));
   } else {
     const int nX = doc.camera.nX, nY = doc.camera.nY;
-    const auto [x, y] = parseIntPair(*args.value("--pixel"), "--pixel", nX - 1, nY - 1);
+    const auto [x, y] = parseIntPair(*args.pixel, "--pixel", nX - 1, nY - 1);
     // constructRay takes the grid as arguments: a 1x1 camera spares the nX x nY image.
     ray = doc.camera.builder().setResolution(1, 1).build().constructRay(nX, nY, x, y);
   }
@@ -102,27 +113,37 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer&
   return os.str();
 }
 
-Command probeCommand() {
-  return {{"probe",
-           "trace one ray through a scene and print what it hits, as JSON",
-           {"SCENE"},
-           {{"--ray", "", 2, "OX,OY,OZ DX,DY,DZ", "the ray's origin and direction"},
-            {"--pixel", "", 1, "X,Y", "the camera's ray through pixel X (column), Y (row)"},
-            {"--width", "", 1, "W", "image width for --pixel (default: the scene's)"},
-            {"--height", "", 1, "H", "image height for --pixel (default: the scene's)"},
-            {"--tracer", "", 1, "T", "the tracer that computes color (default: the scene's)"}},
-           "Give exactly one of --ray and --pixel. Numbers may be negative and are separated by\n"
-           "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n\n"
-           "Output:\n"
-           "  {\"ray\": {\"origin\": [x, y, z], \"direction\": [x, y, z]},\n"
-           "   \"hits\": [{\"t\": .., \"point\": [..], \"normal\": [..], \"geometry\": INDEX,\n"
-           "             \"name\": NAME or null}, ..],\n"
-           "   \"color\": [r, g, b]}\n"
-           "hits: every intersection with t > 0, nearest first (the course's\n"
-           "findGeoIntersections); normal: the shape's outward unit normal at the point;\n"
-           "geometry: the shape's index in the scene; color: what the tracer returns for the\n"
-           "ray, unclamped, on the 0-255 scale.\n"},
-          probe};
+void addProbeCommand(CommandLine& rt) {
+  auto args = std::make_shared<ProbeArgs>();
+  CLI::App& command = rt.addCommand(
+      "probe", "trace one ray through a scene and print what it hits, as JSON",
+      "Give exactly one of --ray and --pixel. Numbers may be negative and are separated by\n"
+      "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n\n"
+      "Output:\n"
+      "  {\"ray\": {\"origin\": [x, y, z], \"direction\": [x, y, z]},\n"
+      "   \"hits\": [{\"t\": .., \"point\": [..], \"normal\": [..], \"geometry\": INDEX,\n"
+      "             \"name\": NAME or null}, ..],\n"
+      "   \"color\": [r, g, b]}\n"
+      "hits: every intersection with t > 0, nearest first (the course's\n"
+      "findGeoIntersections); normal: the shape's outward unit normal at the point;\n"
+      "geometry: the shape's index in the scene; color: what the tracer returns for the\n"
+      "ray, unclamped, on the 0-255 scale.\n",
+      [args](const Io& io) { return probe(*args, io); });
+  command.add_option("SCENE", args->scene, "a built-in scene's name or a .json scene file");
+  // The values are checked by probe(): a pixel's range depends on the scene's resolution.
+  command
+      .add_option_function<std::pair<std::string, std::string>>(
+          "--ray", [args](const auto& r) { args->ray = r; }, "the ray's origin and direction")
+      ->type_name("OX,OY,OZ DX,DY,DZ");
+  command
+      .add_option_function<std::string>(
+          "--pixel", [args](const std::string& p) { args->pixel = p; },
+          "the camera's ray through pixel X (column), Y (row)")
+      ->type_name("X,Y");
+  addSceneOverrideOptions(command, args->overrides,
+                          "image width for --pixel (default: the scene's)",
+                          "image height for --pixel (default: the scene's)",
+                          "the tracer that computes color (default: the scene's)");
 }
 
 }  // namespace rt::cli
