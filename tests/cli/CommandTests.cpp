@@ -166,6 +166,8 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
     std::vector<std::string> args;
     std::string message;
   };
+  // An existing directory, named without an image's or a scene file's ending.
+  const std::string directory = test::freshDirectory("outputIsADirectory");
   const std::vector<Case> cases = {
       // TC01: an unknown command, with a suggestion
       {"TC01",
@@ -236,6 +238,14 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC16",
        {"render", "two-color", "--width", "6.45e1"},
        "rt: --width: expected an integer from 1 to 32768, got '6.45e1'\n"},
+      // TC17: render -o naming an existing directory (once "its name must end in .png")
+      {"TC17",
+       {"render", "two-color", "-o", directory},
+       "rt: -o: cannot write '" + directory + "': it is a directory\n"},
+      // TC18: export -o naming an existing directory (once "must end in .json")
+      {"TC18",
+       {"export", "two-color", "-o", directory},
+       "rt: -o: cannot write '" + directory + "': it is a directory\n"},
       // TC21: a width one beyond 2^15 is refused before anything is allocated
       {"TC21",
        {"render", "two-color", "--width", "32769"},
@@ -353,14 +363,16 @@ TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
 
 TEST(OutputTests, checkOutputWritable) {
   const std::string dir = test::freshDirectory("checkOutputWritable");
-  const auto errorOf = [](const std::string& path) -> std::string {
+  const auto errorOf = [](const std::string& path,
+                          const OutputKind& kind = PNG_IMAGE) -> std::string {
     try {
-      checkOutputWritable(path);
+      checkOutputWritable(path, kind);
     } catch (const std::exception& e) {
       return e.what();
     }
     return "(no error)";
   };
+  // ============ Equivalence Partitions Tests ==============
   // TC01: a new file in a writable directory; the check leaves nothing behind
   EXPECT_EQ(errorOf(dir + "/new.png"), "(no error)");
   EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -375,10 +387,25 @@ TEST(OutputTests, checkOutputWritable) {
   { std::ofstream(dir + "/file") << "x"; }
   EXPECT_EQ(errorOf(dir + "/file/new.png"),
             "-o: cannot write '" + dir + "/file/new.png': '" + dir + "/file' is not a directory");
-  // TC11: a path that ends with a separator names no file
-  EXPECT_EQ(errorOf(dir + "/"), "-o: cannot write '" + dir + "/': it names no file");
-  // TC12: a bare file name is in the current directory (which the tests can write to)
+  // TC05: an existing directory whose name lacks the ending: it is a directory that is wrong
+  // (once "-o: the image is written as PNG, so its name must end in .png")
+  EXPECT_EQ(errorOf(dir), "-o: cannot write '" + dir + "': it is a directory");
+  EXPECT_EQ(errorOf(dir, SCENE_FILE), "-o: cannot write '" + dir + "': it is a directory");
+  // TC06: a file name without the ending, for an image and for a scene file
+  EXPECT_EQ(
+      errorOf(dir + "/x.jpg"),
+      "-o: the image is written as PNG, so its name must end in .png; got '" + dir + "/x.jpg'");
+  EXPECT_EQ(errorOf(dir + "/x.png", SCENE_FILE),
+            "-o: a scene file's name must end in .json; got '" + dir + "/x.png'");
+  // =============== Boundary Values Tests ==================
+  // TC11: a path that ends with a separator and names no existing directory names no file
+  EXPECT_EQ(errorOf(dir + "/none/"), "-o: cannot write '" + dir + "/none/': it names no file");
+  // TC12: an existing directory written with a final separator is a directory
+  EXPECT_EQ(errorOf(dir + "/"), "-o: cannot write '" + dir + "/': it is a directory");
+  // TC13: a bare file name is in the current directory (which the tests can write to)
   EXPECT_EQ(errorOf("rt-check-output-test.png"), "(no error)");
+  // TC14: the empty path
+  EXPECT_EQ(errorOf(""), "-o: cannot write '': it names no file");
 }
 
 }  // namespace

@@ -21,9 +21,7 @@ struct ExportArgs {
 int exportScene(const ExportArgs& args, const Io& io) {
   const BuiltinScene& scene = requireBuiltinScene(args.name, "rt list shows the built-in scenes");
   const std::optional<std::string>& output = args.output;
-  if (output && !output->ends_with(".json"))
-    throw UsageError("-o: a scene file's name must end in .json; got '" + *output + "'");
-  if (output) checkOutputWritable(*output, "-o");
+  if (output) checkOutputWritable(*output, SCENE_FILE);
   const std::string text = dumpScene(scene.make());
   if (output)
     writeFileAtomically(*output, text);

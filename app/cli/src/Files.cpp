@@ -12,12 +12,15 @@ namespace rt::cli {
 
 namespace fs = std::filesystem;
 
-void checkOutputWritable(const std::string& path, std::string_view what) {
+void checkOutputWritable(const std::string& path, const OutputKind& kind, std::string_view what) {
   const std::string prefix = std::string(what) + ": cannot write '" + path + "': ";
   const fs::path p(path);
-  if (path.empty() || !p.has_filename()) throw UsageError(prefix + "it names no file");
   std::error_code ec;
-  if (fs::is_directory(p, ec)) throw UsageError(prefix + "it is a directory");
+  // A directory first: `-o images` says what is wrong with it, not that it lacks ".png".
+  if (!path.empty() && fs::is_directory(p, ec)) throw UsageError(prefix + "it is a directory");
+  if (path.empty() || !p.has_filename()) throw UsageError(prefix + "it names no file");
+  if (!path.ends_with(kind.ending))
+    throw UsageError(std::string(what) + ": " + std::string(kind.rule) + "; got '" + path + "'");
   const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
   const fs::file_status st = fs::status(dir, ec);
   if (!fs::exists(st))

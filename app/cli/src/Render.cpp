@@ -50,10 +50,7 @@ int render(const RenderArgs& args, const Io& io) {
   applySceneOverrides(args.overrides, doc);
   const std::optional<std::string>& outArg = args.output;
   const std::string output = outArg ? *outArg : defaultOutputPath(sceneArg);
-  if (!output.ends_with(".png"))
-    throw UsageError("-o: the image is written as PNG, so its name must end in .png; got '" +
-                     output + "'");
-  checkOutputWritable(output, outArg ? "-o" : "the default output");
+  checkOutputWritable(output, PNG_IMAGE, outArg ? "-o" : "the default output");
   const int nX = doc.camera.nX, nY = doc.camera.nY;
   checkImageFits(nX, nY);
 
