@@ -336,6 +336,45 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "  \"hits\": [],\n"
             "  \"color\": [0, 0, 0]\n"
             "}\n");
+  // TC03: a hit too long for one line of 100 columns is written one member per line, as a scene
+  // file's long objects are; control characters in a name are escaped
+  SceneDocument named = doc;
+  named.geometryNames[0] = std::string(60, 'n') + "\t\x01";
+  EXPECT_EQ(probeJson(named, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\n"
+            "      \"t\": 5,\n"
+            "      \"point\": [-1, 0.5, 3],\n"
+            "      \"normal\": [0, 0, -1],\n"
+            "      \"geometry\": 0,\n"
+            "      \"name\": \"" +
+                std::string(60, 'n') +
+                "\\t\\u0001\"\n"
+                "    },\n"
+                "    {\n"
+                "      \"t\": 9,\n"
+                "      \"point\": [-1, 0.5, 7],\n"
+                "      \"normal\": [0, 0, 1],\n"
+                "      \"geometry\": 0,\n"
+                "      \"name\": \"" +
+                std::string(60, 'n') +
+                "\\t\\u0001\"\n"
+                "    },\n"
+                "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
+                "\"name\": null}\n"
+                "  ],\n"
+                "  \"color\": [350, 70, 70]\n"
+                "}\n");
+  // TC04: numbers in their shortest round-trip form: the direction (1, 1, 0) normalised
+  EXPECT_EQ(probeJson(doc, Ray(Point(0, 0, -20), Vector(1, 1, 0)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [0, 0, -20], \"direction\": [0.7071067811865475, "
+            "0.7071067811865475, 0]},\n"
+            "  \"hits\": [],\n"
+            "  \"color\": [0, 0, 0]\n"
+            "}\n");
 }
 
 // ---------------------------------------------------------------------------------------------

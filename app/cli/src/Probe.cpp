@@ -1,59 +1,19 @@
 // rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y): one ray, what it hits, what it sees.
-#include <cmath>
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <utility>
 
 #include "CommandTable.h"
 #include "camera/Camera.h"
 #include "cli/Tracers.h"
 #include "cli/Values.h"
+#include "common/JsonText.h"
 #include "geometries/Geometry.h"
 
 namespace rt::cli {
 
 namespace {
-
-/// A JSON number: the shortest form that reads back to the same double; null if not finite.
-std::string number(double v) { return std::isfinite(v) ? formatNumber(v) : "null"; }
-
-std::string triple(const Double3& v) {
-  return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
-}
-
-std::string jsonString(std::string_view s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
 
 /// rt probe's arguments, as the command line binds them.
 struct ProbeArgs {
@@ -93,24 +53,26 @@ int probe(const ProbeArgs& args, const Io& io) {
 }  // namespace
 
 std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer) {
-  std::ostringstream os;
-  os << "{\n  \"ray\": {\"origin\": " << triple(ray.head().xyz())
-     << ", \"direction\": " << triple(ray.direction().xyz()) << "},\n  \"hits\": [";
+  using Json = nlohmann::ordered_json;
   const Geometries& shapes = doc.scene.geometries;
-  const std::vector<GeoPoint> hits = shapes.findGeoIntersections(ray);
-  for (std::size_t k = 0; k < hits.size(); ++k) {
-    const GeoPoint& h = hits[k];
+  Json hits = Json::array();
+  for (const GeoPoint& h : shapes.findGeoIntersections(ray)) {
     const std::string& name =
         h.geometry < doc.geometryNames.size() ? doc.geometryNames[h.geometry] : std::string();
-    os << (k == 0 ? "\n" : ",\n") << "    {\"t\": " << number(h.t)
-       << ", \"point\": " << triple(h.point.xyz())
-       << ", \"normal\": " << triple(normalAt(shapes[h.geometry], h.point).xyz())
-       << ", \"geometry\": " << h.geometry
-       << ", \"name\": " << (name.empty() ? "null" : jsonString(name)) << "}";
+    hits.push_back({{"t", jsonNumber(h.t)},
+                    {"point", jsonTriple(h.point.xyz())},
+                    {"normal", jsonTriple(normalAt(shapes[h.geometry], h.point).xyz())},
+                    {"geometry", h.geometry},
+                    {"name", name.empty() ? Json(nullptr) : Json(name)}});
   }
-  os << (hits.empty() ? "" : "\n  ") << "],\n  \"color\": " << triple(tracer.traceRay(ray).rgb())
-     << "\n}\n";
-  return os.str();
+  const Json answer = {{"ray",
+                        {{"origin", jsonTriple(ray.head().xyz())},
+                         {"direction", jsonTriple(ray.direction().xyz())}}},
+                       {"hits", std::move(hits)},
+                       {"color", jsonTriple(tracer.traceRay(ray).rgb())}};
+  // The scene files' layout: one member per line, a hit per line, numbers in their shortest
+  // round-trip form.
+  return formatJson(answer);
 }
 
 void addProbeCommand(CommandLine& rt) {

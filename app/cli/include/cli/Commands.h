@@ -77,7 +77,8 @@ void checkOutputWritable(const std::string& path, const OutputKind& kind,
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
 /// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals
 /// the outward geometric ones, name the geometry's name in the document or null, color the
-/// tracer's traceRay (unclamped).
+/// tracer's traceRay (unclamped). Written by formatJson (common/JsonText.h), the scene files'
+/// layout.
 std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer);
 
 }  // namespace rt::cli
