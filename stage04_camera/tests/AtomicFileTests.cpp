@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "TestFiles.h"
 #include "camera/AtomicFile.h"
 
 namespace rt {
@@ -17,23 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh, empty directory for one test under the build directory.
-fs::path testDir(const std::string& name) {
-  const fs::path dir = fs::path("test-images") / "stage04" / ("atomic-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(
-      std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-}
+/// A fresh, empty directory for one test: test-images/stage04/atomic-NAME.
+fs::path testDir(const std::string& name) { return test::testDir("atomic-" + name); }
+using test::entries;
+using test::readFile;
 
 /// The message of the std::runtime_error that f throws, or "(no error)".
 template <typename F>

@@ -271,10 +271,6 @@ CommandLine::Parsed CommandLine::parse(std::span<const std::string> args) {
   throw std::logic_error("CommandLine: no run function for command '" + chosen()->get_name() + "'");
 }
 
-std::string CommandLine::help(const std::string& command) const {
-  return helpOf(command.empty() ? *app_ : *app_->get_subcommand(command));
-}
-
 CLI::Validator integerValidator(int lo, int hi) {
   return CLI::Validator(
       [lo, hi](std::string& text) -> std::string {

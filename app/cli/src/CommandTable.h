@@ -20,19 +20,20 @@ struct BuiltinScene;
 /// (hint)".
 const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view hint);
 
-/// The options render and probe share that change the scene: --width, --height, --tracer.
-struct SceneOverrides {
+/// The scene argument and the options that change the scene, which render and probe share.
+struct SceneArguments {
+  std::string argument;  ///< SCENE as given: a built-in scene's name or a .json scene file
   std::optional<int> width, height;
   std::optional<std::string> tracer;
 };
 
-/// Adds --width W and --height H (integers, 1..Image::MAX_SIDE) and --tracer T (a known
+/// Adds SCENE, --width W and --height H (integers, 1..Image::MAX_SIDE) and --tracer T (a known
 /// tracer's name) to command, bound to into; the help texts are the command's own.
-void addSceneOverrideOptions(CLI::App& command, SceneOverrides& into, const std::string& widthHelp,
-                             const std::string& heightHelp, const std::string& tracerHelp);
+void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
+                       const std::string& heightHelp, const std::string& tracerHelp);
 
-/// Applies the overrides to doc and checks the result (a scene file's resolution within
-/// Image::MAX_SIDE, its tracer known). @throws UsageError.
-void applySceneOverrides(const SceneOverrides& overrides, SceneDocument& doc);
+/// The scene (loadSceneArgument) with the options applied, and the result checked: the
+/// resolution within Image::MAX_SIDE, the tracer known. @throws UsageError, SceneError.
+SceneDocument sceneFromArguments(const SceneArguments& arguments);
 
 }  // namespace rt::cli

@@ -109,22 +109,14 @@ std::string defaultOutputPath(std::string_view scene) {
   return std::filesystem::path(scene).stem().string() + ".png";
 }
 
-void addSceneOverrideOptions(CLI::App& command, SceneOverrides& into, const std::string& widthHelp,
-                             const std::string& heightHelp, const std::string& tracerHelp) {
-  command
-      .add_option_function<int>(
-          "--width", [&into](const int& w) { into.width = w; }, widthHelp)
-      ->type_name("W")
+void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
+                       const std::string& heightHelp, const std::string& tracerHelp) {
+  command.add_option("SCENE", into.argument, "a built-in scene's name or a .json scene file");
+  addOptional(command, "--width", into.width, widthHelp, "W")
       ->transform(integerValidator(1, Image::MAX_SIDE));
-  command
-      .add_option_function<int>(
-          "--height", [&into](const int& h) { into.height = h; }, heightHelp)
-      ->type_name("H")
+  addOptional(command, "--height", into.height, heightHelp, "H")
       ->transform(integerValidator(1, Image::MAX_SIDE));
-  command
-      .add_option_function<std::string>(
-          "--tracer", [&into](const std::string& t) { into.tracer = t; }, tracerHelp)
-      ->type_name("T")
+  addOptional(command, "--tracer", into.tracer, tracerHelp, "T")
       ->check(CLI::Validator(
           [](std::string& name) {
             return tracerNamed(name) ? std::string() : unknownTracerMessage(name);
@@ -132,16 +124,18 @@ void addSceneOverrideOptions(CLI::App& command, SceneOverrides& into, const std:
           ""));
 }
 
-void applySceneOverrides(const SceneOverrides& overrides, SceneDocument& doc) {
+SceneDocument sceneFromArguments(const SceneArguments& arguments) {
+  SceneDocument doc = loadSceneArgument(arguments.argument);
   constexpr int kMax = Image::MAX_SIDE;
-  if (overrides.width) doc.camera.nX = *overrides.width;
-  if (overrides.height) doc.camera.nY = *overrides.height;
+  if (arguments.width) doc.camera.nX = *arguments.width;
+  if (arguments.height) doc.camera.nY = *arguments.height;
   if (doc.camera.nX < 1 || doc.camera.nX > kMax || doc.camera.nY < 1 || doc.camera.nY > kMax)
     throw UsageError("the scene's resolution " + std::to_string(doc.camera.nX) + "x" +
                      std::to_string(doc.camera.nY) + " is outside 1.." + std::to_string(kMax) +
                      " per side");
-  if (overrides.tracer) doc.render.tracer = *overrides.tracer;
-  findTracer(doc.render.tracer, overrides.tracer ? "--tracer" : "render.tracer");
+  if (arguments.tracer) doc.render.tracer = *arguments.tracer;
+  findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
+  return doc;
 }
 
 }  // namespace rt::cli

@@ -1,5 +1,4 @@
 // rt export NAME [-o FILE.json]
-#include <memory>
 #include <optional>
 #include <ostream>
 
@@ -33,19 +32,15 @@ int exportScene(const ExportArgs& args, const Io& io) {
 }  // namespace
 
 void addExportCommand(CommandLine& rt) {
-  auto args = std::make_shared<ExportArgs>();
-  CLI::App& command = rt.addCommand(
+  const auto [command, args] = rt.addCommand(
       "export", "write a built-in scene as a JSON scene file",
       "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
       "built-in scene. The repository keeps every built-in scene's export in scenes/\n"
       "(cmake --build BUILD --target export-scenes refreshes them).\n",
-      [args](const Io& io) { return exportScene(*args, io); });
-  command.add_option("NAME", args->name, "a built-in scene's name");
-  command
-      .add_option_function<std::string>(
-          "-o,--output", [args](const std::string& o) { args->output = o; },
-          "where to write it (default: standard output)")
-      ->type_name("FILE.json");
+      exportScene);
+  command->add_option("NAME", args->name, "a built-in scene's name");
+  addOptional(*command, "-o,--output", args->output, "where to write it (default: standard output)",
+              "FILE.json");
 }
 
 }  // namespace rt::cli

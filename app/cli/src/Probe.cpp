@@ -1,5 +1,4 @@
 // rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y): one ray, what it hits, what it sees.
-#include <memory>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -17,10 +16,9 @@ namespace {
 
 /// rt probe's arguments, as the command line binds them.
 struct ProbeArgs {
-  std::string scene;
+  SceneArguments scene;
   std::optional<std::pair<std::string, std::string>> ray;  ///< origin, direction
   std::optional<std::string> pixel;
-  SceneOverrides overrides;
 };
 
 int probe(const ProbeArgs& args, const Io& io) {
@@ -28,8 +26,7 @@ int probe(const ProbeArgs& args, const Io& io) {
   if (byRay == byPixel)
     throw UsageError(std::string(byRay ? "give only one of" : "missing") +
                      " --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)");
-  SceneDocument doc = loadSceneArgument(args.scene);
-  applySceneOverrides(args.overrides, doc);
+  SceneDocument doc = sceneFromArguments(args.scene);
 
   std::optional<Ray> ray;
   if (byRay) {
@@ -76,8 +73,7 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer&
 }
 
 void addProbeCommand(CommandLine& rt) {
-  auto args = std::make_shared<ProbeArgs>();
-  CLI::App& command = rt.addCommand(
+  const auto [command, args] = rt.addCommand(
       "probe", "trace one ray through a scene and print what it hits, as JSON",
       "Give exactly one of --ray and --pixel. Numbers may be negative and are separated by\n"
       "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n\n"
@@ -90,22 +86,14 @@ void addProbeCommand(CommandLine& rt) {
       "findGeoIntersections); normal: the shape's outward unit normal at the point;\n"
       "geometry: the shape's index in the scene; color: what the tracer returns for the\n"
       "ray, unclamped, on the 0-255 scale.\n",
-      [args](const Io& io) { return probe(*args, io); });
-  command.add_option("SCENE", args->scene, "a built-in scene's name or a .json scene file");
+      probe);
   // The values are checked by probe(): a pixel's range depends on the scene's resolution.
-  command
-      .add_option_function<std::pair<std::string, std::string>>(
-          "--ray", [args](const auto& r) { args->ray = r; }, "the ray's origin and direction")
-      ->type_name("OX,OY,OZ DX,DY,DZ");
-  command
-      .add_option_function<std::string>(
-          "--pixel", [args](const std::string& p) { args->pixel = p; },
-          "the camera's ray through pixel X (column), Y (row)")
-      ->type_name("X,Y");
-  addSceneOverrideOptions(command, args->overrides,
-                          "image width for --pixel (default: the scene's)",
-                          "image height for --pixel (default: the scene's)",
-                          "the tracer that computes color (default: the scene's)");
+  addOptional(*command, "--ray", args->ray, "the ray's origin and direction", "OX,OY,OZ DX,DY,DZ");
+  addOptional(*command, "--pixel", args->pixel,
+              "the camera's ray through pixel X (column), Y (row)", "X,Y");
+  addSceneArguments(*command, args->scene, "image width for --pixel (default: the scene's)",
+                    "image height for --pixel (default: the scene's)",
+                    "the tracer that computes color (default: the scene's)");
 }
 
 }  // namespace rt::cli

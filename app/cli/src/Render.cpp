@@ -36,18 +36,16 @@ void checkImageFits(int nX, int nY) {
 
 /// rt render's arguments, as the command line binds them.
 struct RenderArgs {
-  std::string scene;
+  SceneArguments scene;
   std::optional<std::string> output;
-  SceneOverrides overrides;
   bool quiet = false;
 };
 
 int render(const RenderArgs& args, const Io& io) {
   // Everything is checked before the first ray: the scene, the options, the output path and the
   // image's size. A mistake costs no render time.
-  const std::string& sceneArg = args.scene;
-  SceneDocument doc = loadSceneArgument(sceneArg);
-  applySceneOverrides(args.overrides, doc);
+  const std::string& sceneArg = args.scene.argument;
+  SceneDocument doc = sceneFromArguments(args.scene);
   const std::optional<std::string>& outArg = args.output;
   const std::string output = outArg ? *outArg : defaultOutputPath(sceneArg);
   checkOutputWritable(output, PNG_IMAGE, outArg ? "-o" : "the default output");
@@ -116,8 +114,7 @@ void addRenderCommand(CommandLine& rt) {
     tracers += "  " + std::string(t.name) + std::string(9 - t.name.size(), ' ') + "(" +
                std::string(t.stage.substr(0, t.stage.find('_'))) + ") " +
                std::string(t.description) + "\n";
-  auto args = std::make_shared<RenderArgs>();
-  CLI::App& command = rt.addCommand(
+  const auto [command, args] = rt.addCommand(
       "render", "render a scene to a PNG image",
       "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
       "options override what the scene sets. Without -o the image is written to SCENE.png\n"
@@ -130,18 +127,13 @@ void addRenderCommand(CommandLine& rt) {
           "time and the rate of primary rays. The image is written to a temporary file and\n"
           "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
           "existing FILE.png as it was, and exits with code 130.\n",
-      [args](const Io& io) { return render(*args, io); });
-  command.add_option("SCENE", args->scene, "a built-in scene's name or a .json scene file");
-  command
-      .add_option_function<std::string>(
-          "-o,--output", [args](const std::string& o) { args->output = o; },
-          "where to write the image (default: SCENE.png)")
-      ->type_name("FILE.png");
-  addSceneOverrideOptions(command, args->overrides,
-                          "image width in pixels, 1..32768 (default: the scene's)",
-                          "image height in pixels, 1..32768 (default: the scene's)",
-                          "which stage's tracer renders it (default: the scene's)");
-  command.add_flag("-q,--quiet", args->quiet, "print nothing but errors");
+      render);
+  addOptional(*command, "-o,--output", args->output,
+              "where to write the image (default: SCENE.png)", "FILE.png");
+  addSceneArguments(*command, args->scene, "image width in pixels, 1..32768 (default: the scene's)",
+                    "image height in pixels, 1..32768 (default: the scene's)",
+                    "which stage's tracer renders it (default: the scene's)");
+  command->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
 }
 
 }  // namespace rt::cli

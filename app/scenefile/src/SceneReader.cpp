@@ -244,8 +244,8 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   const std::string name = n.json().get<std::string>();
   const auto it = doc.materials.find(name);
   if (it == doc.materials.end()) {
-    n.fail("expected the name of a material in \"materials\" (" + known + "), got " +
-           n.describe() + didYouMean(name, names));
+    n.fail("expected the name of a material in \"materials\" (" + known + "), got " + n.describe() +
+           didYouMean(name, names));
   }
   f.material = it->second;
   f.materialName = name;

@@ -19,9 +19,11 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/App.hpp>
@@ -54,6 +56,19 @@ class CommandLine {
   CLI::App& addCommand(const std::string& name, const std::string& summary,
                        const std::string& details, CommandRun run);
 
+  /// addCommand for a command whose arguments are bound to an Args, which lives as long as the
+  /// command line, and whose work is run(args, io). Returns the command and its Args, for
+  /// declaring the options: `auto [command, args] = rt.addCommand("render", ..., render);`.
+  template <typename Args>
+  std::pair<CLI::App*, Args*> addCommand(const std::string& name, const std::string& summary,
+                                         const std::string& details,
+                                         int (*run)(const Args&, const Io&)) {
+    auto args = std::make_shared<Args>();
+    CLI::App& command =
+        addCommand(name, summary, details, [args, run](const Io& io) { return run(*args, io); });
+    return {&command, args.get()};
+  }
+
   /// What parse found: a text to print (a help, the version) or a command to run.
   struct Parsed {
     std::string text;
@@ -68,13 +83,23 @@ class CommandLine {
   ///         (`--pixel 1 2`).
   Parsed parse(std::span<const std::string> args);
 
-  /// `rt --help` for the program itself, `rt NAME --help` for a command.
-  std::string help(const std::string& command = "") const;
-
  private:
   std::unique_ptr<CLI::App> app_;
   std::vector<std::pair<const CLI::App*, CommandRun>> runs_;
 };
+
+/// Adds an option whose value, when given, is stored in into (CLI11 2.1 binds no std::optional):
+/// `addOptional(command, "-o,--output", args.output, "where to write it", "FILE.png")`. T is
+/// what CLI11 converts the value(s) to: a string, an int, a pair of strings for two values.
+/// into must live as long as command. Returns the option, for transform() or check().
+template <typename T>
+CLI::Option* addOptional(CLI::App& command, const std::string& names, std::optional<T>& into,
+                         const std::string& help, const std::string& valueName) {
+  return command
+      .add_option_function<T>(
+          names, [&into](const T& value) { into = value; }, help)
+      ->type_name(valueName);
+}
 
 /// A transformer (Option::transform) for an integer option in [lo, hi] by the app's one rule for
 /// integers (common/Integers.h: 1000, 1e3 and 1000.0 are all 1000). It rewrites the value to
