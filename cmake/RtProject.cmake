@@ -88,3 +88,21 @@ function(rt_require_stb)
   set_target_properties(rt::stb PROPERTIES IMPORTED_LOCATION "${STB_LIBRARY}"
                                            INTERFACE_INCLUDE_DIRECTORIES "${STB_INCLUDE_DIR}")
 endfunction()
+
+# nlohmann-json (Debian nlohmann-json3-dev): the scene files and the JSON that rt prints.
+macro(rt_require_nlohmann_json)
+  find_package(nlohmann_json 3 QUIET)
+  if(NOT nlohmann_json_FOUND)
+    message(FATAL_ERROR "nlohmann-json not found: install the Debian package nlohmann-json3-dev "
+                        "(apt-get install nlohmann-json3-dev)")
+  endif()
+endmacro()
+
+# CLI11 (Debian libcli11-dev, header-only): the command line of rt.
+macro(rt_require_cli11)
+  find_package(CLI11 2 QUIET)
+  if(NOT CLI11_FOUND)
+    message(FATAL_ERROR "CLI11 not found: install the Debian package libcli11-dev "
+                        "(apt-get install libcli11-dev)")
+  endif()
+endmacro()

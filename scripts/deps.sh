@@ -3,17 +3,20 @@
 #
 #   scripts/deps.sh [--dry-run] [--pretend-missing PKG]... [EXTRA_PKG]...
 #
-# Silent, and touches nothing, when every package is already installed. Otherwise it runs
+# Silent, and touches nothing, when every package is already installed (a dry run then says
+# "nothing missing" and lists the packages it checked). Otherwise it runs
 # `apt-get update` once and installs only the missing packages (through sudo when not root).
 # EXTRA_PKG names packages that a caller needs beyond the build's own (CI adds clang for the
 # fuzzer). --dry-run prints what would be installed and exits 0 without changing anything;
 # --pretend-missing treats PKG as not installed (to try the install path on a complete machine).
 set -euo pipefail
+# shellcheck source-path=SCRIPTDIR source=common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # rt_usage
 
 # What the build needs: compiler and build tool, CMake, GoogleTest and GoogleMock, stb (PNG
-# output) and nlohmann-json (scene files). The CMake files name the same packages when one is
-# missing.
-packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev)
+# output), nlohmann-json (scene files) and CLI11 (rt's command line). The CMake files name the
+# same packages when one is missing.
+packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev)
 
 dry_run=0
 pretend=()
@@ -26,7 +29,7 @@ while (($#)); do
       shift
       ;;
     -h | --help)
-      sed -n '2,10s/^# \{0,1\}//p' "$0"
+      rt_usage
       exit 0
       ;;
     -*) echo "deps.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
@@ -53,7 +56,11 @@ missing=()
 for p in "${packages[@]}"; do
   installed "$p" || missing+=("$p")
 done
-((${#missing[@]})) || exit 0
+if ((${#missing[@]} == 0)); then
+  # Silent for the scripts that call it; a dry run is asked for by a person, who gets an answer.
+  ((dry_run)) && echo "deps.sh: dry run: nothing missing (${packages[*]})"
+  exit 0
+fi
 
 if ((EUID == 0)); then
   sudo=()
@@ -70,9 +77,9 @@ apt_update=("${sudo[@]+"${sudo[@]}"}" apt-get update -qq)
 apt_install=("${sudo[@]+"${sudo[@]}"}" env DEBIAN_FRONTEND=noninteractive
              apt-get install -y -qq --no-install-recommends "${missing[@]}")
 if ((dry_run)); then
-  echo "deps.sh: dry run, missing: ${missing[*]}"
-  echo "deps.sh: dry run, would run: ${apt_update[*]}"
-  echo "deps.sh: dry run, would run: ${apt_install[*]}"
+  echo "deps.sh: dry run: missing: ${missing[*]}"
+  echo "deps.sh: dry run: would run: ${apt_update[*]}"
+  echo "deps.sh: dry run: would run: ${apt_install[*]}"
   exit 0
 fi
 echo "deps.sh: installing missing Debian packages: ${missing[*]}"

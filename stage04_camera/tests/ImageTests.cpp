@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "TestFiles.h"
 #include "camera/Camera.h"
 #include "camera/Image.h"
 #include "camera/ImageWriter.h"
@@ -27,24 +28,9 @@ using Rgb = std::array<unsigned char, 3>;
 const Rgb RED8{255, 0, 0};
 const Rgb YELLOW8{255, 255, 0};
 
-/// A fresh, empty directory for one test under the build directory.
-fs::path testDir(const std::string& name) {
-  const fs::path dir = fs::path("test-images") / "stage04" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string readFile(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-/// How many entries a directory has (to see that no temporary file is left behind).
-std::size_t entries(const fs::path& dir) {
-  return static_cast<std::size_t>(
-      std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
-}
+using test::entries;
+using test::readFile;
+using test::testDir;
 
 template <typename E, typename F>
 void expectThrowWith(F&& f, const std::string& fragment) {

@@ -129,7 +129,7 @@ TEST(CommandTests, listPrintsOneLinePerSceneNameFirst) {
   // TC11: extra arguments are refused
   const Outcome extra = run({"list", "more"});
   EXPECT_EQ(extra.code, 2);
-  EXPECT_EQ(extra.err, "rt: rt list: unexpected argument 'more' (see rt list --help)\n");
+  EXPECT_EQ(extra.err, "rt: unexpected argument 'more' for rt list (see rt list --help)\n");
 }
 
 TEST(CommandTests, helpAndVersion) {
@@ -167,6 +167,8 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
     std::vector<std::string> args;
     std::string message;
   };
+  // An existing directory, named without an image's or a scene file's ending.
+  const std::string directory = test::freshDirectory("outputIsADirectory");
   const std::vector<Case> cases = {
       // TC01: an unknown command, with a suggestion
       {"TC01",
@@ -223,6 +225,28 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC13",
        {"export", "two-color", "-o", "x.txt"},
        "rt: -o: a scene file's name must end in .json; got 'x.txt'\n"},
+      // TC14: a pixel given as two arguments: the X,Y form is explained (once "rt: rt probe:
+      // unexpected argument '2'")
+      {"TC14",
+       {"probe", "two-color", "--pixel", "1", "2"},
+       "rt: --pixel takes X,Y (one argument, comma-separated), got '1' and an extra '2' (see rt "
+       "probe --help)\n"},
+      // TC15: a missing scene
+      {"TC15",
+       {"render", "--width", "8"},
+       "rt: missing SCENE for rt render (see rt render --help)\n"},
+      // TC16: a width that is a number but not an integer, in any form
+      {"TC16",
+       {"render", "two-color", "--width", "6.45e1"},
+       "rt: --width: expected an integer from 1 to 32768, got '6.45e1'\n"},
+      // TC17: render -o naming an existing directory (once "its name must end in .png")
+      {"TC17",
+       {"render", "two-color", "-o", directory},
+       "rt: -o: cannot write '" + directory + "': it is a directory\n"},
+      // TC18: export -o naming an existing directory (once "must end in .json")
+      {"TC18",
+       {"export", "two-color", "-o", directory},
+       "rt: -o: cannot write '" + directory + "': it is a directory\n"},
       // TC21: a width one beyond 2^15 is refused before anything is allocated
       {"TC21",
        {"render", "two-color", "--width", "32769"},
@@ -231,6 +255,10 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC22",
        {"render", "two-color", "--height", "0"},
        "rt: --height: expected an integer from 1 to 32768, got '0'\n"},
+      // TC24: 2^15 + 1 written as a JSON exponent is refused too
+      {"TC24",
+       {"render", "two-color", "--width", "3.2769e4"},
+       "rt: --width: expected an integer from 1 to 32768, got '3.2769e4'\n"},
       // TC23: --pixel one column beyond the (overridden) image
       {"TC23",
        {"probe", "two-color", "--width", "10", "--pixel", "10,0"},
@@ -307,6 +335,45 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "  \"hits\": [],\n"
             "  \"color\": [0, 0, 0]\n"
             "}\n");
+  // TC03: a hit too long for one line of 100 columns is written one member per line, as a scene
+  // file's long objects are; control characters in a name are escaped
+  SceneDocument named = doc;
+  named.geometryNames[0] = std::string(60, 'n') + "\t\x01";
+  EXPECT_EQ(probeJson(named, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\n"
+            "      \"t\": 5,\n"
+            "      \"point\": [-1, 0.5, 3],\n"
+            "      \"normal\": [0, 0, -1],\n"
+            "      \"geometry\": 0,\n"
+            "      \"name\": \"" +
+                std::string(60, 'n') +
+                "\\t\\u0001\"\n"
+                "    },\n"
+                "    {\n"
+                "      \"t\": 9,\n"
+                "      \"point\": [-1, 0.5, 7],\n"
+                "      \"normal\": [0, 0, 1],\n"
+                "      \"geometry\": 0,\n"
+                "      \"name\": \"" +
+                std::string(60, 'n') +
+                "\\t\\u0001\"\n"
+                "    },\n"
+                "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
+                "\"name\": null}\n"
+                "  ],\n"
+                "  \"color\": [350, 70, 70]\n"
+                "}\n");
+  // TC04: numbers in their shortest round-trip form: the direction (1, 1, 0) normalised
+  EXPECT_EQ(probeJson(doc, Ray(Point(0, 0, -20), Vector(1, 1, 0)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [0, 0, -20], \"direction\": [0.7071067811865475, "
+            "0.7071067811865475, 0]},\n"
+            "  \"hits\": [],\n"
+            "  \"color\": [0, 0, 0]\n"
+            "}\n");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -334,14 +401,16 @@ TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
 
 TEST(OutputTests, checkOutputWritable) {
   const std::string dir = test::freshDirectory("checkOutputWritable");
-  const auto errorOf = [](const std::string& path) -> std::string {
+  const auto errorOf = [](const std::string& path,
+                          const OutputKind& kind = PNG_IMAGE) -> std::string {
     try {
-      checkOutputWritable(path);
+      checkOutputWritable(path, kind);
     } catch (const std::exception& e) {
       return e.what();
     }
     return "(no error)";
   };
+  // ============ Equivalence Partitions Tests ==============
   // TC01: a new file in a writable directory; the check leaves nothing behind
   EXPECT_EQ(errorOf(dir + "/new.png"), "(no error)");
   EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -356,25 +425,25 @@ TEST(OutputTests, checkOutputWritable) {
   { std::ofstream(dir + "/file") << "x"; }
   EXPECT_EQ(errorOf(dir + "/file/new.png"),
             "-o: cannot write '" + dir + "/file/new.png': '" + dir + "/file' is not a directory");
-  // TC11: a path that ends with a separator names no file
-  EXPECT_EQ(errorOf(dir + "/"), "-o: cannot write '" + dir + "/': it names no file");
-  // TC12: a bare file name is in the current directory (which the tests can write to)
+  // TC05: an existing directory whose name lacks the ending: it is a directory that is wrong
+  // (once "-o: the image is written as PNG, so its name must end in .png")
+  EXPECT_EQ(errorOf(dir), "-o: cannot write '" + dir + "': it is a directory");
+  EXPECT_EQ(errorOf(dir, SCENE_FILE), "-o: cannot write '" + dir + "': it is a directory");
+  // TC06: a file name without the ending, for an image and for a scene file
+  EXPECT_EQ(
+      errorOf(dir + "/x.jpg"),
+      "-o: the image is written as PNG, so its name must end in .png; got '" + dir + "/x.jpg'");
+  EXPECT_EQ(errorOf(dir + "/x.png", SCENE_FILE),
+            "-o: a scene file's name must end in .json; got '" + dir + "/x.png'");
+  // =============== Boundary Values Tests ==================
+  // TC11: a path that ends with a separator and names no existing directory names no file
+  EXPECT_EQ(errorOf(dir + "/none/"), "-o: cannot write '" + dir + "/none/': it names no file");
+  // TC12: an existing directory written with a final separator is a directory
+  EXPECT_EQ(errorOf(dir + "/"), "-o: cannot write '" + dir + "/': it is a directory");
+  // TC13: a bare file name is in the current directory (which the tests can write to)
   EXPECT_EQ(errorOf("rt-check-output-test.png"), "(no error)");
-}
-
-TEST(OutputTests, writeFileAtomically) {
-  const std::string dir = test::freshDirectory("writeFileAtomically");
-  // TC01: a new file gets the text, and no temporary file remains
-  writeFileAtomically(dir + "/a.json", "{}\n");
-  EXPECT_EQ(test::readFile(dir + "/a.json"), "{}\n");
-  // TC02: an existing file is replaced
-  writeFileAtomically(dir + "/a.json", "{\"x\": 1}\n");
-  EXPECT_EQ(test::readFile(dir + "/a.json"), "{\"x\": 1}\n");
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
-                          std::filesystem::directory_iterator()),
-            1);
-  // TC11: a directory that does not exist: an error naming the path
-  EXPECT_THROW(writeFileAtomically(dir + "/missing/a.json", "{}"), std::runtime_error);
+  // TC14: the empty path
+  EXPECT_EQ(errorOf(""), "-o: cannot write '': it names no file");
 }
 
 }  // namespace

@@ -54,6 +54,13 @@ TEST(RenderProcessTests, widthAndHeightOverrideTheScenesResolution) {
   const Rgb8Image b = readPng(dir + "/b.png");
   EXPECT_EQ(b.width, 8);
   EXPECT_EQ(b.height, findBuiltinScene("two-color")->make().camera.nY);
+  // TC03: integers in any JSON number form, as in a scene file (once "--width 4e1" was refused)
+  r = runRt({"render", "two-color", "-o", dir + "/e.png", "--width", "4e1", "--height", "30.0",
+             "--quiet"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const Rgb8Image e = readPng(dir + "/e.png");
+  EXPECT_EQ(e.width, 40);
+  EXPECT_EQ(e.height, 30);
   // TC11: the smallest image, 1x1
   r = runRt(
       {"render", "two-color", "-o", dir + "/c.png", "--width", "1", "--height", "1", "--quiet"});

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "cli/ArgParser.h"
+#include "cli/CommandLine.h"
 #include "cli/Values.h"
 
 namespace rt::cli {
@@ -32,6 +32,14 @@ TEST(ValuesTests, parseInt) {
   // TC04: a fraction
   EXPECT_EQ(errorOf([] { parseInt("6.5", "--width", 1, 32768); }),
             "--width: expected an integer from 1 to 32768, got '6.5'");
+  // TC05: any JSON number form of an integer (the app's one rule, as in scene files)
+  EXPECT_EQ(parseInt("1e2", "--pixel X", 0, 999), 100);
+  EXPECT_EQ(parseInt("100.0", "--pixel X", 0, 999), 100);
+  // TC06: forms JSON does not have
+  EXPECT_EQ(errorOf([] { parseInt("+5", "--pixel X", 0, 999); }),
+            "--pixel X: expected an integer from 0 to 999, got '+5'");
+  EXPECT_EQ(errorOf([] { parseInt("05", "--pixel X", 0, 999); }),
+            "--pixel X: expected an integer from 0 to 999, got '05'");
   // =============== Boundary Values Tests ==================
   // TC11, TC12: the range's ends are accepted
   EXPECT_EQ(parseInt("1", "--width", 1, 32768), 1);

@@ -1,29 +1,39 @@
 #pragma once
-// Internal to rt_cli: the commands' specs and entry points, gathered in one table by Commands.cpp.
+// Internal to rt_cli: each command adds itself to rt's command line (Commands.cpp gathers them).
 
-#include "cli/ArgParser.h"
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cli/CommandLine.h"
 #include "cli/Commands.h"
 
 namespace rt::cli {
 
-struct Command {
-  CommandSpec spec;
-  int (*run)(const ParsedArgs& args, const Io& io);
-};
-
-Command listCommand();
-Command renderCommand();
-Command probeCommand();
-Command exportCommand();
+void addListCommand(CommandLine& rt);
+void addRenderCommand(CommandLine& rt);
+void addProbeCommand(CommandLine& rt);
+void addExportCommand(CommandLine& rt);
 
 struct BuiltinScene;
 /// The built-in scene called name. @throws UsageError "unknown scene 'x'; did you mean 'y'?
 /// (hint)".
 const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view hint);
 
-/// The options shared by render and probe that change the scene: --width, --height, --tracer.
-/// Applies them to doc and checks the result (resolution within Image::MAX_SIDE, known tracer).
-/// @throws UsageError.
-void applySceneOverrides(const ParsedArgs& args, SceneDocument& doc);
+/// The scene argument and the options that change the scene, which render and probe share.
+struct SceneArguments {
+  std::string argument;  ///< SCENE as given: a built-in scene's name or a .json scene file
+  std::optional<int> width, height;
+  std::optional<std::string> tracer;
+};
+
+/// Adds SCENE, --width W and --height H (integers, 1..Image::MAX_SIDE) and --tracer T (a known
+/// tracer's name) to command, bound to into; the help texts are the command's own.
+void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
+                       const std::string& heightHelp, const std::string& tracerHelp);
+
+/// The scene (loadSceneArgument) with the options applied, and the result checked: the
+/// resolution within Image::MAX_SIDE, the tracer known. @throws UsageError, SceneError.
+SceneDocument sceneFromArguments(const SceneArguments& arguments);
 
 }  // namespace rt::cli

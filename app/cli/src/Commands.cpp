@@ -7,10 +7,10 @@
 
 #include "CommandTable.h"
 #include "camera/Image.h"
-#include "cli/ArgParser.h"
 #include "cli/BuiltinScenes.h"
+#include "cli/CommandLine.h"
 #include "cli/Tracers.h"
-#include "cli/Values.h"
+#include "common/NearestName.h"
 #include "scenefile/SceneFile.h"
 
 #ifndef RT_VERSION
@@ -21,35 +21,18 @@ namespace rt::cli {
 
 namespace {
 
-const std::vector<Command>& commands() {
-  static const std::vector<Command> table = {listCommand(), renderCommand(), probeCommand(),
-                                             exportCommand()};
-  return table;
-}
+const char* const kDescription = ": the staged ray tracer's command-line program";
 
-std::string mainHelp() {
-  std::ostringstream os;
-  os << versionString() << ": the staged ray tracer's command-line program\n\n"
-     << "Usage: rt COMMAND [ARGUMENTS] [OPTIONS]\n\nCommands:\n";
-  std::size_t width = 0;
-  for (const Command& c : commands()) width = std::max(width, c.spec.name.size());
-  for (const Command& c : commands())
-    os << "  " << c.spec.name << std::string(width - c.spec.name.size() + 2, ' ') << c.spec.summary
-       << "\n";
-  os << "\nOptions:\n"
-     << "  -h, --help  show this help; rt COMMAND --help shows a command's\n"
-     << "  --version   print the version\n\n"
-     << "Examples:\n"
-     << "  rt list\n"
-     << "  rt render two-color -o two-color.png --width 400 --height 400\n"
-     << "  rt render my-scene.json --tracer shadow\n"
-     << "  rt probe two-color --pixel 500,500\n"
-     << "  rt export two-color -o two-color.json\n\n"
-     << "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).\n";
-  return os.str();
-}
+const char* const kFooter =
+    "Examples:\n"
+    "  rt list\n"
+    "  rt render two-color -o two-color.png --width 400 --height 400\n"
+    "  rt render my-scene.json --tracer shadow\n"
+    "  rt probe two-color --pixel 500,500\n"
+    "  rt export two-color -o two-color.json\n\n"
+    "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).\n";
 
-int list(const ParsedArgs&, const Io& io) {
+int list(const Io& io) {
   std::size_t width = 0;
   for (const BuiltinScene& s : builtinScenes()) width = std::max(width, s.name.size());
   for (const BuiltinScene& s : builtinScenes())
@@ -57,53 +40,37 @@ int list(const ParsedArgs&, const Io& io) {
   return EXIT_OK;
 }
 
-bool endsWith(std::string_view s, std::string_view suffix) { return s.ends_with(suffix); }
+/// rt's command line: the program and its commands.
+CommandLine makeCommandLine() {
+  CommandLine rt("rt", versionString() + kDescription, kFooter, versionString());
+  addListCommand(rt);
+  addRenderCommand(rt);
+  addProbeCommand(rt);
+  addExportCommand(rt);
+  return rt;
+}
 
 }  // namespace
 
-Command listCommand() {
-  return {{"list",
-           "list the built-in scenes, one per line: name, then a short description",
-           {},
-           {},
-           "Every scene of the course's stages is built in; `rt render NAME` renders one with its\n"
-           "stage's tracer, and `rt export NAME` writes it as a scene file.\n"},
-          list};
+void addListCommand(CommandLine& rt) {
+  rt.addCommand(
+      "list", "list the built-in scenes, one per line: name, then a short description",
+      "Every scene of the course's stages is built in; `rt render NAME` renders one with its\n"
+      "stage's tracer, and `rt export NAME` writes it as a scene file.\n",
+      list);
 }
 
 std::string versionString() { return std::string("rt ") + RT_VERSION; }
 
 int runRt(std::span<const std::string> args, const Io& io) {
   try {
-    if (args.empty()) {
-      io.err << "rt: missing COMMAND (see rt --help)\n";
-      return EXIT_BAD_INPUT;
-    }
-    const std::string& first = args.front();
-    if (first == "--help" || first == "-h" || first == "help") {
-      io.out << mainHelp();
+    CommandLine rt = makeCommandLine();
+    const CommandLine::Parsed parsed = rt.parse(args);
+    if (!parsed.run) {
+      io.out << parsed.text;
       return EXIT_OK;
     }
-    if (first == "--version") {
-      io.out << versionString() << "\n";
-      return EXIT_OK;
-    }
-    for (const Command& c : commands()) {
-      if (c.spec.name != first) continue;
-      const ParsedArgs parsed = parseArgs(c.spec, args.subspan(1));
-      if (parsed.help) {
-        io.out << formatHelp(c.spec);
-        return EXIT_OK;
-      }
-      return c.run(parsed, io);
-    }
-    std::vector<std::string_view> names;
-    for (const Command& c : commands()) names.push_back(c.spec.name);
-    std::string message = "unknown command '" + first + "'";
-    if (const std::string near = nearestName(first, names); !near.empty())
-      message += "; did you mean '" + near + "'?";
-    io.err << "rt: " << message << " (see rt --help)\n";
-    return EXIT_BAD_INPUT;
+    return parsed.run(io);
   } catch (const UsageError& e) {
     io.err << "rt: " << e.what() << "\n";
     return EXIT_BAD_INPUT;
@@ -127,14 +94,12 @@ const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view 
   if (const BuiltinScene* builtin = findBuiltinScene(name)) return *builtin;
   std::vector<std::string_view> names;
   for (const BuiltinScene& s : builtinScenes()) names.push_back(s.name);
-  std::string message = "unknown scene '" + std::string(name) + "'";
-  if (const std::string near = nearestName(name, names); !near.empty())
-    message += "; did you mean '" + near + "'?";
-  throw UsageError(message + " (" + std::string(hint) + ")");
+  throw UsageError("unknown scene '" + std::string(name) + "'" + didYouMean(name, names) + " (" +
+                   std::string(hint) + ")");
 }
 
 SceneDocument loadSceneArgument(std::string_view scene) {
-  if (endsWith(scene, ".json") && !findBuiltinScene(scene)) return loadScene(std::string(scene));
+  if (scene.ends_with(".json") && !findBuiltinScene(scene)) return loadScene(std::string(scene));
   return requireBuiltinScene(scene, "rt list shows the built-in scenes; a scene file ends in .json")
       .make();
 }
@@ -144,18 +109,33 @@ std::string defaultOutputPath(std::string_view scene) {
   return std::filesystem::path(scene).stem().string() + ".png";
 }
 
-void applySceneOverrides(const ParsedArgs& args, SceneDocument& doc) {
+void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
+                       const std::string& heightHelp, const std::string& tracerHelp) {
+  command.add_option("SCENE", into.argument, "a built-in scene's name or a .json scene file");
+  addOptional(command, "--width", into.width, widthHelp, "W")
+      ->transform(integerValidator(1, Image::MAX_SIDE));
+  addOptional(command, "--height", into.height, heightHelp, "H")
+      ->transform(integerValidator(1, Image::MAX_SIDE));
+  addOptional(command, "--tracer", into.tracer, tracerHelp, "T")
+      ->check(CLI::Validator(
+          [](std::string& name) {
+            return tracerNamed(name) ? std::string() : unknownTracerMessage(name);
+          },
+          ""));
+}
+
+SceneDocument sceneFromArguments(const SceneArguments& arguments) {
+  SceneDocument doc = loadSceneArgument(arguments.argument);
   constexpr int kMax = Image::MAX_SIDE;
-  if (const std::string* w = args.value("--width"))
-    doc.camera.nX = parseInt(*w, "--width", 1, kMax);
-  if (const std::string* h = args.value("--height"))
-    doc.camera.nY = parseInt(*h, "--height", 1, kMax);
+  if (arguments.width) doc.camera.nX = *arguments.width;
+  if (arguments.height) doc.camera.nY = *arguments.height;
   if (doc.camera.nX < 1 || doc.camera.nX > kMax || doc.camera.nY < 1 || doc.camera.nY > kMax)
     throw UsageError("the scene's resolution " + std::to_string(doc.camera.nX) + "x" +
                      std::to_string(doc.camera.nY) + " is outside 1.." + std::to_string(kMax) +
                      " per side");
-  if (const std::string* t = args.value("--tracer")) doc.render.tracer = *t;
-  findTracer(doc.render.tracer, args.has("--tracer") ? "--tracer" : "render.tracer");
+  if (arguments.tracer) doc.render.tracer = *arguments.tracer;
+  findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
+  return doc;
 }
 
 }  // namespace rt::cli

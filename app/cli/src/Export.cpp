@@ -1,7 +1,9 @@
 // rt export NAME [-o FILE.json]
+#include <optional>
 #include <ostream>
 
 #include "CommandTable.h"
+#include "camera/AtomicFile.h"
 #include "cli/BuiltinScenes.h"
 #include "scenefile/SceneFile.h"
 
@@ -9,13 +11,16 @@ namespace rt::cli {
 
 namespace {
 
-int exportScene(const ParsedArgs& args, const Io& io) {
-  const std::string& name = args.positional[0];
-  const BuiltinScene& scene = requireBuiltinScene(name, "rt list shows the built-in scenes");
-  const std::string* output = args.value("--output");
-  if (output && !output->ends_with(".json"))
-    throw UsageError("-o: a scene file's name must end in .json; got '" + *output + "'");
-  if (output) checkOutputWritable(*output, "-o");
+/// rt export's arguments, as the command line binds them.
+struct ExportArgs {
+  std::string name;
+  std::optional<std::string> output;
+};
+
+int exportScene(const ExportArgs& args, const Io& io) {
+  const BuiltinScene& scene = requireBuiltinScene(args.name, "rt list shows the built-in scenes");
+  const std::optional<std::string>& output = args.output;
+  if (output) checkOutputWritable(*output, SCENE_FILE);
   const std::string text = dumpScene(scene.make());
   if (output)
     writeFileAtomically(*output, text);
@@ -26,15 +31,16 @@ int exportScene(const ParsedArgs& args, const Io& io) {
 
 }  // namespace
 
-Command exportCommand() {
-  return {{"export",
-           "write a built-in scene as a JSON scene file",
-           {"NAME"},
-           {{"--output", "-o", 1, "FILE.json", "where to write it (default: standard output)"}},
-           "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
-           "built-in scene. The repository keeps every built-in scene's export in scenes/\n"
-           "(cmake --build BUILD --target export-scenes refreshes them).\n"},
-          exportScene};
+void addExportCommand(CommandLine& rt) {
+  const auto [command, args] = rt.addCommand(
+      "export", "write a built-in scene as a JSON scene file",
+      "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
+      "built-in scene. The repository keeps every built-in scene's export in scenes/\n"
+      "(cmake --build BUILD --target export-scenes refreshes them).\n",
+      exportScene);
+  command->add_option("NAME", args->name, "a built-in scene's name");
+  addOptional(*command, "-o,--output", args->output, "where to write it (default: standard output)",
+              "FILE.json");
 }
 
 }  // namespace rt::cli

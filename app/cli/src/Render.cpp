@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -35,18 +36,21 @@ void checkImageFits(int nX, int nY) {
   }
 }
 
-int render(const ParsedArgs& args, const Io& io) {
+/// rt render's arguments, as the command line binds them.
+struct RenderArgs {
+  SceneArguments scene;
+  std::optional<std::string> output;
+  bool quiet = false;
+};
+
+int render(const RenderArgs& args, const Io& io) {
   // Everything is checked before the first ray: the scene, the options, the output path and the
   // image's size. A mistake costs no render time.
-  const std::string& sceneArg = args.positional[0];
-  SceneDocument doc = loadSceneArgument(sceneArg);
-  applySceneOverrides(args, doc);
-  const std::string* outArg = args.value("--output");
+  const std::string& sceneArg = args.scene.argument;
+  SceneDocument doc = sceneFromArguments(args.scene);
+  const std::optional<std::string>& outArg = args.output;
   const std::string output = outArg ? *outArg : defaultOutputPath(sceneArg);
-  if (!output.ends_with(".png"))
-    throw UsageError("-o: the image is written as PNG, so its name must end in .png; got '" +
-                     output + "'");
-  checkOutputWritable(output, outArg ? "-o" : "the default output");
+  checkOutputWritable(output, PNG_IMAGE, outArg ? "-o" : "the default output");
   const int nX = doc.camera.nX, nY = doc.camera.nY;
   checkImageFits(nX, nY);
 
@@ -56,7 +60,7 @@ int render(const ParsedArgs& args, const Io& io) {
   const CenterSampler sampler;
   Image image(nX, nY);
 
-  const bool quiet = args.has("--quiet");
+  const bool quiet = args.quiet;
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   const auto start = std::chrono::steady_clock::now();
   std::atomic<std::uint64_t> donePixels{0};
@@ -110,32 +114,32 @@ int render(const ParsedArgs& args, const Io& io) {
 
 }  // namespace
 
-Command renderCommand() {
+void addRenderCommand(CommandLine& rt) {
   std::string tracers;
   for (const TracerKind& t : tracerKinds())
     tracers += "  " + std::string(t.name) + std::string(9 - t.name.size(), ' ') + "(" +
                std::string(t.stage.substr(0, t.stage.find('_'))) + ") " +
                std::string(t.description) + "\n";
-  return {{"render",
-           "render a scene to a PNG image",
-           {"SCENE"},
-           {{"--output", "-o", 1, "FILE.png", "where to write the image (default: SCENE.png)"},
-            {"--width", "", 1, "W", "image width in pixels, 1..32768 (default: the scene's)"},
-            {"--height", "", 1, "H", "image height in pixels, 1..32768 (default: the scene's)"},
-            {"--tracer", "", 1, "T", "which stage's tracer renders it (default: the scene's)"},
-            {"--quiet", "-q", 0, "", "print nothing but errors"}},
-           "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
-           "options override what the scene sets. Without -o the image is written to SCENE.png\n"
-           "in the current directory (for a scene file: its name with .png for .json).\n\n"
-           "Tracers (a built-in scene's default is its stage's; a file's is render.tracer):\n" +
-               tracers +
-               "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
-               "resolution and that the output's directory can be written to. Progress goes to\n"
-               "stderr (a percentage on a terminal, a line per 10% otherwise), then the wall\n"
-               "time and the rate of primary rays. The image is written to a temporary file and\n"
-               "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
-               "existing FILE.png as it was, and exits with code 130.\n"},
-          render};
+  const auto [command, args] = rt.addCommand(
+      "render", "render a scene to a PNG image",
+      "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
+      "options override what the scene sets. Without -o the image is written to SCENE.png\n"
+      "in the current directory (for a scene file: its name with .png for .json).\n\n"
+      "Tracers (a built-in scene's default is its stage's; a file's is render.tracer):\n" +
+          tracers +
+          "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
+          "resolution and that the output's directory can be written to. Progress goes to\n"
+          "stderr (a percentage on a terminal, a line per 10% otherwise), then the wall\n"
+          "time and the rate of primary rays. The image is written to a temporary file and\n"
+          "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
+          "existing FILE.png as it was, and exits with code 130.\n",
+      render);
+  addOptional(*command, "-o,--output", args->output,
+              "where to write the image (default: SCENE.png)", "FILE.png");
+  addSceneArguments(*command, args->scene, "image width in pixels, 1..32768 (default: the scene's)",
+                    "image height in pixels, 1..32768 (default: the scene's)",
+                    "which stage's tracer renders it (default: the scene's)");
+  command->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
 }
 
 }  // namespace rt::cli

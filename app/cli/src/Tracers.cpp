@@ -2,7 +2,8 @@
 
 #include <vector>
 
-#include "cli/ArgParser.h"
+#include "cli/CommandLine.h"
+#include "common/NearestName.h"
 #include "lighting/PhongTracer.h"
 #include "reflections/WhittedTracer.h"
 #include "shadows/ShadowTracer.h"
@@ -35,18 +36,24 @@ const TracerKind kTracers[] = {
 
 std::span<const TracerKind> tracerKinds() { return kTracers; }
 
-const TracerKind& findTracer(std::string_view name, std::string_view what) {
+const TracerKind* tracerNamed(std::string_view name) {
+  for (const TracerKind& t : kTracers)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+std::string unknownTracerMessage(std::string_view name) {
   std::vector<std::string_view> names;
-  for (const TracerKind& t : kTracers) {
-    if (t.name == name) return t;
-    names.push_back(t.name);
-  }
-  std::string message = std::string(what) + ": unknown tracer '" + std::string(name) + "'";
-  if (const std::string near = nearestName(name, names); !near.empty())
-    message += "; did you mean '" + near + "'?";
-  message += " (known:";
+  for (const TracerKind& t : kTracers) names.push_back(t.name);
+  std::string message =
+      "unknown tracer '" + std::string(name) + "'" + didYouMean(name, names) + " (known:";
   for (std::string_view n : names) message += " " + std::string(n);
-  throw UsageError(message + ")");
+  return message + ")";
+}
+
+const TracerKind& findTracer(std::string_view name, std::string_view what) {
+  if (const TracerKind* t = tracerNamed(name)) return *t;
+  throw UsageError(std::string(what) + ": " + unknownTracerMessage(name));
 }
 
 }  // namespace rt::cli

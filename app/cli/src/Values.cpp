@@ -2,10 +2,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <system_error>
 
-#include "cli/ArgParser.h"
+#include "cli/CommandLine.h"
+#include "common/Integers.h"
 
 namespace rt::cli {
 
@@ -15,15 +17,13 @@ std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"
 
 }  // namespace
 
+std::string integerError(std::string_view text, int min, int max) {
+  return "expected " + integerDescription(min, max) + ", got " + quoted(text);
+}
+
 int parseInt(std::string_view text, std::string_view what, int min, int max) {
-  long long value = 0;
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  const bool whole = ec == std::errc{} && ptr == end;
-  if (!whole || value < min || value > max)
-    throw UsageError(std::string(what) + ": expected an integer from " + std::to_string(min) +
-                     " to " + std::to_string(max) + ", got " + quoted(text));
-  return static_cast<int>(value);
+  if (const std::optional<int> value = integerInText(text, min, max)) return *value;
+  throw UsageError(std::string(what) + ": " + integerError(text, min, max));
 }
 
 double parseDouble(std::string_view text, std::string_view what) {

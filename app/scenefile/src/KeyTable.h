@@ -19,6 +19,7 @@
 
 #include "Node.h"
 #include "Readers.h"
+#include "common/NearestName.h"
 
 namespace rt::scenefile {
 

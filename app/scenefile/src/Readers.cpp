@@ -1,10 +1,11 @@
 #include "Readers.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <cstdint>
-#include <stdexcept>
+#include <optional>
+
+#include "common/Integers.h"
+#include "common/NearestName.h"
 
 namespace rt::scenefile {
 
@@ -12,41 +13,6 @@ namespace {
 
 bool isArrayOf(const Node& n, std::size_t size) {
   return n.json().is_array() && n.json().size() == size;
-}
-
-std::string integerDescription(int lo, int hi) {
-  if (hi == INT_MAX)
-    return lo == 0 ? "a non-negative integer" : "an integer of at least " + std::to_string(lo);
-  return "an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
-}
-
-/// Optimal string alignment distance (Levenshtein plus adjacent transpositions), ignoring case;
-/// any value above bound is returned as bound + 1 (the search stops as soon as it gets there).
-std::size_t editDistance(std::string_view a, std::string_view b, std::size_t bound) {
-  const std::size_t lengthGap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
-  if (lengthGap > bound) return bound + 1;
-  const auto lower = [](char c) {
-    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  };
-  // Three rows of the dynamic-programming table: i - 2, i - 1 and i.
-  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), current(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    current[0] = i;
-    std::size_t rowMin = current[0];
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
-      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost});
-      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) &&
-          lower(a[i - 2]) == lower(b[j - 1]))
-        current[j] = std::min(current[j], before[j - 2] + 1);
-      rowMin = std::min(rowMin, current[j]);
-    }
-    if (rowMin > bound) return bound + 1;
-    std::swap(before, previous);
-    std::swap(previous, current);
-  }
-  return std::min(previous[b.size()], bound + 1);
 }
 
 /// Names listed in a message: at most this many, then "and N more".
@@ -84,21 +50,9 @@ double readNumberIn(const Node& n, double lo, double hi) {
 }
 
 int readInteger(const Node& n, int lo, int hi) {
-  const Json& j = n.json();
-  const bool inRange = [&] {
-    if (j.is_number_unsigned())
-      return j.get<std::uint64_t>() <= static_cast<std::uint64_t>(hi) &&
-             static_cast<std::int64_t>(j.get<std::uint64_t>()) >= lo;
-    if (j.is_number_integer()) return j.get<std::int64_t>() >= lo && j.get<std::int64_t>() <= hi;
-    if (j.is_number_float()) {
-      const double v = j.get<double>();
-      return v == std::floor(v) && v >= lo && v <= hi;  // false for infinities
-    }
-    return false;
-  }();
-  if (!inRange) n.expected(integerDescription(lo, hi));
-  return j.is_number_float() ? static_cast<int>(j.get<double>())
-                             : static_cast<int>(j.get<std::int64_t>());
+  const std::optional<int> v = integerIn(n.json(), lo, hi);
+  if (!v) n.expected(integerDescription(lo, hi));
+  return *v;
 }
 
 std::string readString(const Node& n) {
@@ -181,26 +135,7 @@ std::string readChoice(const Node& n, std::string_view what,
   if (!n.json().is_string()) n.expected(expected);
   const std::string value = n.json().get<std::string>();
   if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
-  std::string detail = "expected " + expected + ", got " + n.describe();
-  if (const std::string_view near = nearestName(value, choices); !near.empty())
-    detail += "; did you mean '" + std::string(near) + "'?";
-  n.fail(detail);
-}
-
-std::string_view nearestName(std::string_view name, std::span<const std::string_view> known) {
-  constexpr std::size_t MAX_EDITS = 3;
-  std::string_view best;
-  std::size_t bestDistance = MAX_EDITS + 1;
-  for (std::string_view k : known) {
-    // A plausible typo: one edit in a short name, up to a third of a longer one (at most 3).
-    const std::size_t allowed = std::clamp<std::size_t>(k.size() / 3, 1, MAX_EDITS);
-    const std::size_t d = editDistance(name, k, allowed);
-    if (d <= allowed && d < bestDistance) {
-      best = k;
-      bestDistance = d;
-    }
-  }
-  return best;
+  n.fail("expected " + expected + ", got " + n.describe() + didYouMean(value, choices));
 }
 
 std::string joinNames(std::span<const std::string_view> names) {

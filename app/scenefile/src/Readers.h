@@ -26,7 +26,8 @@ double readPositive(const Node& n);
 double readNonNegative(const Node& n);
 /// A finite number in [lo, hi].
 double readNumberIn(const Node& n, double lo, double hi);
-/// An integral number in [lo, hi] (1e2 and 100.0 count as 100).
+/// An integral number in [lo, hi] (1e2 and 100.0 count as 100): the app's one rule for
+/// integers, common/Integers.h.
 int readInteger(const Node& n, int lo, int hi = INT_MAX);
 std::string readString(const Node& n);
 /// [x,y,z] of finite numbers.
@@ -48,9 +49,6 @@ std::array<int, 2> readIntegerPair(const Node& n, int lo, int hi);
 std::string readChoice(const Node& n, std::string_view what,
                        std::span<const std::string_view> choices);
 
-/// The known name nearest to name (case-insensitive optimal string alignment distance), when
-/// near enough to be a plausible typo; empty otherwise.
-std::string_view nearestName(std::string_view name, std::span<const std::string_view> known);
 /// "a, b, c"; after 12 names, "and N more".
 std::string joinNames(std::span<const std::string_view> names);
 

@@ -13,6 +13,7 @@
 #include "SourceMap.h"
 #include "camera/Camera.h"
 #include "camera/Image.h"
+#include "common/NearestName.h"
 #include "geometries/Geometry.h"
 #include "reflections/WhittedTracer.h"
 #include "scenefile/SceneFile.h"
@@ -241,11 +242,8 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   const std::string name = n.json().get<std::string>();
   const auto it = doc.materials.find(name);
   if (it == doc.materials.end()) {
-    std::string detail =
-        "expected the name of a material in \"materials\" (" + known + "), got " + n.describe();
-    if (const std::string_view near = nearestName(name, names); !near.empty())
-      detail += "; did you mean '" + std::string(near) + "'?";
-    n.fail(detail);
+    n.fail("expected the name of a material in \"materials\" (" + known + "), got " + n.describe() +
+           didYouMean(name, names));
   }
   f.material = it->second;
   f.materialName = name;

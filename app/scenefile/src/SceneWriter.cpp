@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <variant>
 
+#include "common/JsonText.h"
 #include "geometries/Geometry.h"
 #include "primitives/Overloaded.h"
 #include "scenefile/SceneFile.h"
@@ -27,21 +28,13 @@ bool same(const Material& a, const Material& b) {
          a.shininess == b.shininess && same(a.ior, b.ior);
 }
 
-/// A number as JSON: integral values as integers (2 rather than 2.0), everything else as a
-/// double, which nlohmann writes in the shortest form that reads back to the same double.
-Json number(double v) {
-  constexpr double EXACT_INTEGERS = 9007199254740992.0;  // 2^53
-  if (v == std::trunc(v) && std::abs(v) < EXACT_INTEGERS && !(v == 0 && std::signbit(v)))
-    return Json(static_cast<std::int64_t>(v));
-  return Json(v);
-}
-
-Json triple(const Double3& d) { return Json::array({number(d.x), number(d.y), number(d.z)}); }
-Json color(const Color& c) { return triple(c.rgb()); }
+// Numbers go through jsonNumber (integral values as integers, 2 rather than 2.0); dumpScene
+// writes the text with formatJson, every double in its shortest round-trip form.
+Json color(const Color& c) { return jsonTriple(c.rgb()); }
 
 /// One number when the three channels are the same, else [r,g,b].
 Json coefficient(const Double3& k) {
-  return same(k.x, k.y) && same(k.y, k.z) ? number(k.x) : triple(k);
+  return same(k.x, k.y) && same(k.y, k.z) ? jsonNumber(k.x) : jsonTriple(k);
 }
 
 /// True when the shapes' normalisation of c gives exactly u.
@@ -78,7 +71,7 @@ Double3 directionPreimage(const Vector& u) {
   return x;  // not found (rare): the copy may differ from the original by an ulp
 }
 
-Json direction(const Vector& u) { return triple(directionPreimage(u)); }
+Json direction(const Vector& u) { return jsonTriple(directionPreimage(u)); }
 
 Json materialJson(const Material& m) {
   const Material d;
@@ -88,32 +81,32 @@ Json materialJson(const Material& m) {
   if (m.shininess != d.shininess) j["shininess"] = m.shininess;
   if (!same(m.kT, d.kT)) j["kT"] = coefficient(m.kT);
   if (!same(m.kR, d.kR)) j["kR"] = coefficient(m.kR);
-  if (!same(m.ior, d.ior)) j["ior"] = number(m.ior);
+  if (!same(m.ior, d.ior)) j["ior"] = jsonNumber(m.ior);
   return j;
 }
 
 Json cameraJson(const CameraSpec& c) {
   Json j = Json::object();
-  j["location"] = triple(c.location.xyz());
+  j["location"] = jsonTriple(c.location.xyz());
   if (c.target) {
-    j["target"] = triple(c.target->xyz());
+    j["target"] = jsonTriple(c.target->xyz());
   } else if (c.to) {
-    j["to"] = triple(c.to->xyz());
+    j["to"] = jsonTriple(c.to->xyz());
   } else {
     throw std::logic_error("toJson: the camera has neither a target nor a direction (to)");
   }
-  j["up"] = triple(c.up.xyz());
-  j["vpDistance"] = number(c.vpDistance);
-  j["vpSize"] = Json::array({number(c.vpWidth), number(c.vpHeight)});
+  j["up"] = jsonTriple(c.up.xyz());
+  j["vpDistance"] = jsonNumber(c.vpDistance);
+  j["vpSize"] = Json::array({jsonNumber(c.vpWidth), jsonNumber(c.vpHeight)});
   j["resolution"] = Json::array({c.nX, c.nY});
   return j;
 }
 
 void attenuation(Json& j, const PointLight& l) {
-  j["position"] = triple(l.position.xyz());
-  j["kC"] = number(l.kC);
-  j["kL"] = number(l.kL);
-  j["kQ"] = number(l.kQ);
+  j["position"] = jsonTriple(l.position.xyz());
+  j["kC"] = jsonNumber(l.kC);
+  j["kL"] = jsonNumber(l.kL);
+  j["kQ"] = jsonNumber(l.kQ);
 }
 
 Json lightJson(const LightSource& light) {
@@ -135,7 +128,7 @@ Json lightJson(const LightSource& light) {
                           j["intensity"] = color(l.intensity);
                           attenuation(j, l);
                           j["direction"] = direction(l.direction);
-                          j["narrowBeam"] = number(l.narrowBeam);
+                          j["narrowBeam"] = jsonNumber(l.narrowBeam);
                           return j;
                         },
                     },
@@ -143,12 +136,12 @@ Json lightJson(const LightSource& light) {
 }
 
 Json axisJson(const Ray& axis) {
-  return {{"origin", triple(axis.head().xyz())}, {"direction", direction(axis.direction())}};
+  return {{"origin", jsonTriple(axis.head().xyz())}, {"direction", direction(axis.direction())}};
 }
 
 Json pointsJson(std::span<const Point> points) {
   Json j = Json::array();
-  for (const Point& p : points) j.push_back(triple(p.xyz()));
+  for (const Point& p : points) j.push_back(jsonTriple(p.xyz()));
   return j;
 }
 
@@ -156,12 +149,12 @@ Json shapeJson(const Geometry& g) {
   return std::visit(Overloaded{
                         [](const Sphere& s) {
                           return Json{{"type", "sphere"},
-                                      {"center", triple(s.center().xyz())},
-                                      {"radius", number(s.radius())}};
+                                      {"center", jsonTriple(s.center().xyz())},
+                                      {"radius", jsonNumber(s.radius())}};
                         },
                         [](const Plane& p) {
                           return Json{{"type", "plane"},
-                                      {"point", triple(p.point().xyz())},
+                                      {"point", jsonTriple(p.point().xyz())},
                                       {"normal", direction(p.normal())}};
                         },
                         [](const Triangle& t) {
@@ -173,65 +166,16 @@ Json shapeJson(const Geometry& g) {
                         [](const Tube& t) {
                           return Json{{"type", "tube"},
                                       {"axis", axisJson(t.axis())},
-                                      {"radius", number(t.radius())}};
+                                      {"radius", jsonNumber(t.radius())}};
                         },
                         [](const Cylinder& c) {
                           return Json{{"type", "cylinder"},
                                       {"axis", axisJson(c.axis())},
-                                      {"radius", number(c.radius())},
-                                      {"height", number(c.height())}};
+                                      {"radius", jsonNumber(c.radius())},
+                                      {"height", jsonNumber(c.height())}};
                         },
                     },
                     g);
-}
-
-/// j on one line: {"kA": 0.15, "color": [255, 255, 255]}.
-std::string oneLine(const Json& j) {
-  if (!j.is_structured()) return j.dump();
-  std::string out(1, j.is_object() ? '{' : '[');
-  std::size_t i = 0;
-  for (auto it = j.begin(); it != j.end(); ++it, ++i) {
-    if (i) out += ", ";
-    if (j.is_object()) {
-      out += Json(it.key()).dump();
-      out += ": ";
-    }
-    out += oneLine(it.value());
-  }
-  out += j.is_object() ? '}' : ']';
-  return out;
-}
-
-/// Writes j with two-space indentation, starting at column. A value whose one-line form fits
-/// in LINE_WIDTH stays on one line (a point, a light, a short geometry), except a list of
-/// objects.
-void write(std::string& out, const Json& j, int indent, std::size_t column) {
-  constexpr std::size_t LINE_WIDTH = 100;
-  if (!j.is_structured() || j.empty()) {
-    out += oneLine(j);
-    return;
-  }
-  // A list of objects (lights, geometries) always gets one line per object.
-  const bool listOfObjects = j.is_array() && j.front().is_object();
-  if (std::string line = oneLine(j); !listOfObjects && column + line.size() <= LINE_WIDTH) {
-    out += line;
-    return;
-  }
-  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
-  out += j.is_object() ? "{\n" : "[\n";
-  std::size_t i = 0;
-  for (auto it = j.begin(); it != j.end(); ++it, ++i) {
-    if (i) out += ",\n";
-    out += pad;
-    if (j.is_object()) {
-      out += Json(it.key()).dump();
-      out += ": ";
-    }
-    write(out, it.value(), indent + 2, out.size() - out.rfind('\n') - 1);
-  }
-  out += '\n';
-  out.append(static_cast<std::size_t>(indent), ' ');
-  out += j.is_object() ? '}' : ']';
 }
 
 }  // namespace
@@ -279,15 +223,10 @@ Json toJson(const SceneDocument& doc) {
   }
   j["render"] = {{"tracer", doc.render.tracer},
                  {"maxLevel", doc.render.maxLevel},
-                 {"minK", number(doc.render.minK)}};
+                 {"minK", jsonNumber(doc.render.minK)}};
   return j;
 }
 
-std::string dumpScene(const SceneDocument& doc) {
-  std::string out;
-  write(out, toJson(doc), 0, 0);
-  out += '\n';
-  return out;
-}
+std::string dumpScene(const SceneDocument& doc) { return formatJson(toJson(doc)); }
 
 }  // namespace rt

@@ -18,8 +18,8 @@ class ImageWriter {
   virtual void write(const Image& image, const std::string& path) const = 0;
 };
 
-/// PNG through stb_image_write. Writes to a temporary file beside path, then renames it over
-/// path, so a failed write never leaves a half-written image.
+/// PNG through stb_image_write, written with writeFileAtomically (camera/AtomicFile.h): a failed
+/// write never leaves a half-written image.
 class PngImageWriter final : public ImageWriter {
  public:
   void write(const Image& image, const std::string& path) const override;

@@ -57,20 +57,29 @@ SceneDocument loadSceneArgument(std::string_view scene);
 /// with .png instead of .json for a scene file; in the current directory either way.
 std::string defaultOutputPath(std::string_view scene);
 
-/// Refuses, before any work is done, an output path that cannot be written: a directory, a
-/// missing parent directory, or one where no file can be created (tried for real, with a
-/// temporary file that is removed again). @throws UsageError naming the path and the reason.
-void checkOutputWritable(const std::string& path, std::string_view what = "-o");
+/// What a command's output must be: the ending of its name, and the sentence that says why.
+struct OutputKind {
+  std::string_view ending;  ///< ".png"
+  std::string_view rule;    ///< "the image is written as PNG, so its name must end in .png"
+};
+inline constexpr OutputKind PNG_IMAGE{".png",
+                                      "the image is written as PNG, so its name must end in .png"};
+inline constexpr OutputKind SCENE_FILE{".json", "a scene file's name must end in .json"};
 
-/// Writes text to path through a temporary file beside it and a rename, so that a failure
-/// leaves any existing file untouched. @throws std::runtime_error naming the path.
-void writeFileAtomically(const std::string& path, std::string_view text);
+/// Refuses, before any work is done, an output path that cannot be written, in this order: an
+/// existing directory, a path that names no file, a name without kind's ending, a missing
+/// parent directory, or one where no file can be created (tried for real: stage04's
+/// checkTemporaryFileBeside). what names the path's origin in the message ("-o").
+/// @throws UsageError "WHAT: cannot write 'PATH': REASON" or "WHAT: RULE; got 'PATH'".
+void checkOutputWritable(const std::string& path, const OutputKind& kind,
+                         std::string_view what = "-o");
 
 /// The JSON that `rt probe` prints for ray:
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
 /// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals
 /// the outward geometric ones, name the geometry's name in the document or null, color the
-/// tracer's traceRay (unclamped).
+/// tracer's traceRay (unclamped). Written by formatJson (common/JsonText.h), the scene files'
+/// layout.
 std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer);
 
 }  // namespace rt::cli

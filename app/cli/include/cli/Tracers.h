@@ -24,7 +24,13 @@ struct TracerKind {
 /// ambient, phong, shadow, whitted.
 std::span<const TracerKind> tracerKinds();
 
-/// The tracer called name. @throws UsageError naming the known tracers (and the nearest one).
+/// The tracer called name, or nullptr.
+const TracerKind* tracerNamed(std::string_view name);
+
+/// "unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong shadow whitted)".
+std::string unknownTracerMessage(std::string_view name);
+
+/// The tracer called name. @throws UsageError "WHAT: " + unknownTracerMessage(name).
 const TracerKind& findTracer(std::string_view name, std::string_view what = "--tracer");
 
 }  // namespace rt::cli

@@ -4,14 +4,19 @@
 /// option and quotes what was given ("--width: expected an integer from 1 to 32768, got '12x'").
 
 #include <array>
+#include <string>
 #include <string_view>
 
 #include "primitives/Double3.h"
 
 namespace rt::cli {
 
-/// An integer in [min, max]. @throws UsageError.
+/// An integer in [min, max] by the app's one rule for integers (common/Integers.h: 1e3 and
+/// 1000.0 are 1000). @throws UsageError "WHAT: " + integerError(text, min, max).
 int parseInt(std::string_view text, std::string_view what, int min, int max);
+
+/// "expected an integer from 1 to 32768, got '12x'".
+std::string integerError(std::string_view text, int min, int max);
 
 /// A finite number. @throws UsageError.
 double parseDouble(std::string_view text, std::string_view what);

@@ -1,0 +1,285 @@
+#include "cli/CommandLine.h"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <sstream>
+#include <string_view>
+
+// The whole of CLI11 here: constructing a CLI::App needs its formatter and its config parser.
+#include <CLI/CLI.hpp>
+
+#include "cli/Values.h"
+#include "common/Integers.h"
+#include "common/NearestName.h"
+
+namespace rt::cli {
+
+namespace {
+
+/// "rt" for the program, "rt render" for a command.
+std::string commandLabel(const CLI::App& app) {
+  const CLI::App* parent = app.get_parent();
+  return parent ? commandLabel(*parent) + " " + app.get_name() : app.get_name();
+}
+
+std::string seeHelp(const CLI::App& app) { return " (see " + commandLabel(app) + " --help)"; }
+
+/// CLI11's rule: "--x..." and "-x" are options, "-1", "-" and "--" are not.
+bool looksLikeOption(std::string_view arg) {
+  if (arg.size() < 2 || arg[0] != '-' || arg == "--") return false;
+  return arg[1] == '-' || !std::isdigit(static_cast<unsigned char>(arg[1]));
+}
+
+/// "-o, --output FILE.png" or "    --width W": the left column of an option's help line.
+std::string optionColumn(const CLI::Option& o) {
+  std::string left;
+  for (const std::string& s : o.get_snames()) left += "-" + s + ", ";
+  if (left.empty()) left = "    ";
+  const std::vector<std::string>& longNames = o.get_lnames();
+  left += longNames.empty() ? "" : "--" + longNames.front();
+  if (o.get_items_expected_max() > 0) left += " " + o.get_type_name();
+  return left;
+}
+
+/// Rows of a two-column table, the left column padded to its widest entry.
+std::string table(const std::vector<std::pair<std::string, std::string>>& rows) {
+  std::size_t width = 0;
+  for (const auto& [left, right] : rows) width = std::max(width, left.size());
+  std::string out;
+  for (const auto& [left, right] : rows)
+    out += "  " + left + std::string(width - left.size() + 2, ' ') + right + "\n";
+  return out;
+}
+
+/// The one layout of every help text. A command's: usage line, summary, options (--help last),
+/// details. The program's: description, usage line, commands, options, footer.
+class HelpFormatter : public CLI::FormatterBase {
+ public:
+  std::string make_help(const CLI::App* app, std::string, CLI::AppFormatMode) const override {
+    std::ostringstream os;
+    const bool program = app->get_parent() == nullptr;
+    if (program) {
+      os << app->get_description() << "\n\nUsage: " << commandLabel(*app)
+         << " COMMAND [ARGUMENTS] [OPTIONS]\n\nCommands:\n";
+      std::vector<std::pair<std::string, std::string>> commands;
+      for (const CLI::App* c :
+           app->get_subcommands([](const CLI::App* c) { return !c->get_group().empty(); }))
+        commands.emplace_back(c->get_name(), c->get_description());
+      os << table(commands);
+    } else {
+      os << "Usage: " << commandLabel(*app);
+      for (const CLI::Option* p :
+           app->get_options([](const CLI::Option* o) { return o->get_positional(); }))
+        os << ' ' << p->get_name();
+      os << " [OPTIONS]\n\n" << app->get_description() << "\n";
+    }
+    std::vector<std::pair<std::string, std::string>> options;
+    for (const CLI::Option* o : app->get_options()) {
+      if (!o->get_positional() && o != app->get_help_ptr())
+        options.emplace_back(optionColumn(*o), o->get_description());
+    }
+    if (const CLI::Option* help = app->get_help_ptr())
+      options.emplace_back(optionColumn(*help), help->get_description());
+    os << "\nOptions:\n" << table(options);
+    if (const std::string footer = app->get_footer(); !footer.empty())
+      os << "\n" << footer << (footer.ends_with('\n') ? "" : "\n");
+    return os.str();
+  }
+};
+
+/// app's help in HelpFormatter's layout. (CLI::App::help() would show the help of a command
+/// parsed below app instead: for `rt help`, the help command's own.)
+std::string helpOf(const CLI::App& app) {
+  return app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+}
+
+/// The option of app that CLI11's message is about: CLI11's errors carry no other trace of it.
+/// The message starts with the option's name, "--output: ..." or, for a flag given a value,
+/// "quiet was given a disallowed flag override".
+const CLI::Option* optionInMessage(const CLI::App& app, std::string_view message) {
+  std::string name(message.substr(0, message.find_first_of(": ")));
+  name.erase(0, name.find_first_not_of('-'));
+  for (const CLI::Option* o : app.get_options())
+    if (!o->get_positional() && (o->check_lname(name) || o->check_sname(name))) return o;
+  return nullptr;
+}
+
+/// rt's words for what CLI11 refused while parsing args for command (or the program).
+std::string describe(const CLI::ParseError& e, const CLI::App& command,
+                     std::span<const std::string> args) {
+  // Our validators' messages, after the option's name: "--width: expected an integer ...".
+  if (dynamic_cast<const CLI::ValidationError*>(&e)) return e.what();
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
+    if (const CLI::Option* o = optionInMessage(command, e.what())) {
+      const std::string name = o->get_name();
+      const int values = o->get_items_expected_max();
+      // A flag (no value) complains only when given one: --quiet=yes.
+      if (values == 0) {
+        const auto given = std::find_if(args.begin(), args.end(), [&name](const std::string& a) {
+          return a.starts_with(name + "=");
+        });
+        return "option " + name + " takes no value" +
+               (given == args.end() ? "" : ", got '" + *given + "'") + seeHelp(command);
+      }
+      if (o->count() > static_cast<std::size_t>(values))
+        return "option " + name + " given twice" + seeHelp(command);
+      return "option " + name + " expects " + o->get_type_name() + seeHelp(command);
+    }
+  }
+  return e.what() + seeHelp(command);
+}
+
+/// `--pixel 1 2`: a value that should be a comma-separated list, given without a comma and
+/// followed by a stray argument, was most likely split by a space. Says so, or returns nothing.
+std::optional<std::string> splitValueHint(const CLI::App& command,
+                                          std::span<const std::string> args) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (!looksLikeOption(args[i])) continue;
+    const CLI::Option* o = command.get_option_no_throw(args[i]);
+    if (o == nullptr || o->get_positional()) continue;
+    const std::size_t n = static_cast<std::size_t>(std::max(o->get_items_expected_max(), 0));
+    const std::string form = o->get_type_name();
+    if (n == 0 || form.find(',') == std::string::npos || i + n + 1 >= args.size()) continue;
+    const auto values = args.subspan(i + 1, n);
+    const std::string& stray = args[i + n + 1];
+    if (looksLikeOption(stray) || std::all_of(values.begin(), values.end(), [](const auto& v) {
+          return v.find(',') != std::string::npos;
+        }))
+      continue;
+    std::string got;
+    for (const std::string& v : values) got += (got.empty() ? "'" : " '") + v + "'";
+    return o->get_name() + " takes " + form + " (" +
+           (n == 1 ? "one argument, " : std::to_string(n) + " arguments, each ") +
+           "comma-separated), got " + got + " and an extra '" + stray + "'" + seeHelp(command);
+  }
+  return std::nullopt;
+}
+
+/// "unknown option '--widht' for rt render; did you mean '--width'? (see rt render --help)".
+std::string unknownOption(const CLI::App& app, std::string_view arg) {
+  const std::string name(arg.starts_with("--") ? arg.substr(0, arg.find('=')) : arg);
+  std::vector<std::string> longNames;
+  for (const CLI::Option* o : app.get_options())
+    for (const std::string& l : o->get_lnames()) longNames.push_back("--" + l);
+  const std::vector<std::string_view> known(longNames.begin(), longNames.end());
+  return "unknown option '" + name + "' for " + commandLabel(app) + didYouMean(name, known) +
+         seeHelp(app);
+}
+
+/// Whether a left-over argument is an unknown option rather than a stray value: it looks like
+/// one, and the command line has it before any "--" (after which everything is positional).
+bool isUnknownOption(const std::string& arg, std::span<const std::string> args) {
+  if (!looksLikeOption(arg)) return false;
+  const auto end = std::find(args.begin(), args.end(), "--");
+  return std::find(args.begin(), end, arg) != end;
+}
+
+/// What CLI11 left over (without the "--" it keeps), in order.
+std::vector<std::string> leftovers(const CLI::App& app) {
+  std::vector<std::string> rest = app.remaining();
+  std::erase(rest, "--");
+  return rest;
+}
+
+/// The checks CLI11 leaves to us, in the order of the command line: unknown commands and
+/// options, stray arguments, then missing positional arguments.
+void checkWhatIsLeft(const CLI::App& program, const CLI::App* command,
+                     std::span<const std::string> args) {
+  std::vector<std::string> stray;
+  const auto commandAt =
+      command ? std::find(args.begin(), args.end(), command->get_name()) : args.end();
+  for (const std::string& arg : leftovers(program)) {
+    if (isUnknownOption(arg, args)) throw UsageError(unknownOption(program, arg));
+    // A word before the command, or no command at all: a command that does not exist. After
+    // the command (CLI11 hands a second command's name back to the program): a stray argument.
+    if (std::find(args.begin(), commandAt, arg) != commandAt) {
+      std::vector<std::string_view> names;
+      for (const CLI::App* c :
+           program.get_subcommands([](const CLI::App* c) { return !c->get_group().empty(); }))
+        names.push_back(c->get_name());
+      throw UsageError("unknown command '" + arg + "'" + didYouMean(arg, names) + seeHelp(program));
+    }
+    stray.push_back(arg);
+  }
+  if (command == nullptr) throw UsageError("missing COMMAND" + seeHelp(program));
+  std::vector<std::string> rest = leftovers(*command);
+  rest.insert(rest.end(), stray.begin(), stray.end());
+  for (const std::string& arg : rest) {
+    if (isUnknownOption(arg, args)) throw UsageError(unknownOption(*command, arg));
+    if (std::optional<std::string> hint = splitValueHint(*command, args)) throw UsageError(*hint);
+    throw UsageError("unexpected argument '" + arg + "' for " + commandLabel(*command) +
+                     seeHelp(*command));
+  }
+  for (const CLI::Option* p :
+       command->get_options([](const CLI::Option* o) { return o->get_positional(); }))
+    if (p->count() == 0)
+      throw UsageError("missing " + p->get_name() + " for " + commandLabel(*command) +
+                       seeHelp(*command));
+}
+
+}  // namespace
+
+CommandLine::CommandLine(std::string name, std::string description, std::string footer,
+                         std::string version)
+    : app_(std::make_unique<CLI::App>(std::move(description), std::move(name))) {
+  // An option given twice is an error, and a flag takes no value ("--quiet=no" would turn it
+  // off). Set first: options get the defaults when they are added, commands inherit them.
+  app_->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::Throw);
+  app_->option_defaults()->disable_flag_override();
+  app_->formatter(std::make_shared<HelpFormatter>());
+  app_->footer(std::move(footer));
+  app_->set_help_flag("-h,--help", "show this help; rt COMMAND --help shows a command's");
+  app_->set_version_flag("--version", std::move(version), "print the version");
+  // Unknown options and stray arguments are left over rather than refused, so that the
+  // messages about them are ours (checkWhatIsLeft).
+  app_->allow_extras();
+  // One command at a time: a second command's name after the first is a stray argument.
+  app_->require_subcommand(0, 1);
+  // `rt help` is `rt --help` (hidden: no group).
+  app_->add_subcommand("help", "show this help")->group("");
+}
+
+CLI::App& CommandLine::addCommand(const std::string& name, const std::string& summary,
+                                  const std::string& details, CommandRun run) {
+  CLI::App* command = app_->add_subcommand(name, summary);
+  command->footer(details);  // not the program's, which it would inherit
+  command->set_help_flag("-h,--help", "show this help");
+  runs_.emplace_back(command, std::move(run));
+  return *command;
+}
+
+CommandLine::Parsed CommandLine::parse(std::span<const std::string> args) {
+  const auto chosen = [this]() -> const CLI::App* {
+    const std::vector<CLI::App*> parsed = app_->get_subcommands();
+    return parsed.empty() ? nullptr : parsed.front();
+  };
+  try {
+    // CLI11 takes the arguments last first.
+    app_->parse(std::vector<std::string>(args.rbegin(), args.rend()));
+  } catch (const CLI::CallForHelp&) {
+    return {helpOf(chosen() ? *chosen() : *app_), {}};
+  } catch (const CLI::CallForVersion& e) {
+    return {std::string(e.what()) + "\n", {}};
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(describe(e, chosen() ? *chosen() : *app_, args));
+  }
+  checkWhatIsLeft(*app_, chosen(), args);
+  if (chosen()->get_name() == "help") return {helpOf(*app_), {}};
+  for (const auto& [command, run] : runs_)
+    if (command == chosen()) return {{}, run};
+  throw std::logic_error("CommandLine: no run function for command '" + chosen()->get_name() + "'");
+}
+
+CLI::Validator integerValidator(int lo, int hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const std::optional<int> value = integerInText(text, lo, hi);
+        if (!value) return integerError(text, lo, hi);
+        text = std::to_string(*value);
+        return {};
+      },
+      "");  // no description: CLI11 would append it to the value's name in the help ("W:...")
+}
+
+}  // namespace rt::cli

@@ -1,0 +1,61 @@
+#include "common/NearestName.h"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+namespace rt {
+
+namespace {
+
+char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+
+/// Optimal string alignment distance between a and b, ignoring case; any distance above bound
+/// is returned as bound + 1 (the search stops as soon as every cell of a row exceeds it).
+std::size_t editDistance(std::string_view a, std::string_view b, std::size_t bound) {
+  const std::size_t lengthGap = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+  if (lengthGap > bound) return bound + 1;
+  // Three rows of the dynamic-programming table: i - 2, i - 1 and i.
+  std::vector<std::size_t> before(b.size() + 1), previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    std::size_t rowMin = current[0];
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, previous[j - 1] + cost});
+      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) &&
+          lower(a[i - 2]) == lower(b[j - 1]))
+        current[j] = std::min(current[j], before[j - 2] + 1);
+      rowMin = std::min(rowMin, current[j]);
+    }
+    if (rowMin > bound) return bound + 1;
+    std::swap(before, previous);
+    std::swap(previous, current);
+  }
+  return std::min(previous[b.size()], bound + 1);
+}
+
+}  // namespace
+
+std::string_view nearestName(std::string_view word, std::span<const std::string_view> known) {
+  constexpr std::size_t MAX_EDITS = 3;
+  std::string_view best;
+  std::size_t bestDistance = MAX_EDITS + 1;
+  for (std::string_view k : known) {
+    const std::size_t allowed = std::clamp<std::size_t>(k.size() / 3, 1, MAX_EDITS);
+    const std::size_t d = editDistance(word, k, allowed);
+    if (d <= allowed && d < bestDistance) {
+      best = k;
+      bestDistance = d;
+    }
+  }
+  return best;
+}
+
+std::string didYouMean(std::string_view word, std::span<const std::string_view> known) {
+  const std::string_view near = nearestName(word, known);
+  return near.empty() ? std::string() : "; did you mean '" + std::string(near) + "'?";
+}
+
+}  // namespace rt

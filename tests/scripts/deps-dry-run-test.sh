@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Tests of scripts/deps.sh's decisions, without touching the machine: dpkg-query, apt-get and
+# sudo are replaced by stubs on PATH. dpkg-query reports every package installed except those
+# listed in STUB_MISSING; apt-get and sudo record that they were run, which a dry run must never
+# do.
+#
+#   tests/scripts/deps-dry-run-test.sh PATH/TO/deps.sh
+#
+# Prints one line per case and exits 1 when any case fails.
+set -uo pipefail
+
+deps="$1"
+stubs="$(mktemp -d)"
+trap 'rm -rf "$stubs"' EXIT
+
+cat >"$stubs/dpkg-query" <<'STUB'
+#!/usr/bin/env bash
+# dpkg-query -W -f=FORMAT PACKAGE: "installed" unless PACKAGE is in STUB_MISSING.
+for p in ${STUB_MISSING:-}; do [[ "$p" == "${!#}" ]] && exit 1; done
+printf installed
+STUB
+for tool in apt-get sudo; do
+  printf '#!/usr/bin/env bash\necho "%s $*" >>"%s/ran"\n' "$tool" "$stubs" >"$stubs/$tool"
+done
+chmod +x "$stubs"/*
+
+failures=0
+# check NAME EXPECTED_EXIT EXPECTED_STDOUT_PREFIX ARG...: runs deps.sh, compares.
+check() {
+  local name="$1" want_code="$2" want_out="$3"
+  shift 3
+  rm -f "$stubs/ran"
+  local out code
+  out="$(PATH="$stubs:$PATH" "$deps" "$@" 2>&1)"
+  code=$?
+  if [[ "$code" != "$want_code" || "${out:0:${#want_out}}" != "$want_out" || \
+        ( -z "$want_out" && -n "$out" ) || -e "$stubs/ran" ]]; then
+    echo "FAIL $name: exit $code (want $want_code), output:"
+    echo "$out"
+    [[ -e "$stubs/ran" ]] && echo "and it ran: $(cat "$stubs/ran")"
+    failures=$((failures + 1))
+  else
+    echo "ok   $name"
+  fi
+}
+
+all="cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev"
+# TC01: a dry run with nothing missing says so, naming what it checked (once it printed nothing)
+STUB_MISSING="" check "TC01 dry run, nothing missing" 0 \
+  "deps.sh: dry run: nothing missing ($all)" --dry-run
+# TC02: without --dry-run, nothing missing: silent, for the scripts that call it
+STUB_MISSING="" check "TC02 nothing missing is silent" 0 ""
+# TC03: a dry run with a package missing names it and runs nothing
+STUB_MISSING="libcli11-dev" check "TC03 dry run, one missing" 0 \
+  "deps.sh: dry run: missing: libcli11-dev" --dry-run
+# TC04: an extra package is checked too
+STUB_MISSING="" check "TC04 dry run with an extra package" 0 \
+  "deps.sh: dry run: nothing missing ($all clang)" --dry-run clang
+# TC05: --pretend-missing makes an installed package missing
+STUB_MISSING="" check "TC05 dry run, pretend missing" 0 \
+  "deps.sh: dry run: missing: make" --dry-run --pretend-missing make
+
+((failures == 0))
