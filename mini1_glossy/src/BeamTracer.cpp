@@ -20,28 +20,26 @@ double fraction(double x) noexcept { return x - std::floor(x); }
 
 }  // namespace
 
-BeamTracer::BeamTracer(const GlossyScene& scene, const Intersectable* accelerator,
+BeamTracer::BeamTracer(const LitScene& scene, const Intersectable* accelerator,
                        const WhittedSettings& whitted, const BeamTracerSettings& beams,
                        const RayOffset& offset)
-    : WhittedTracer(scene, accelerator, whitted, offset), glossy_(scene), beams_(beams) {
-  scene.validate();  // the blurs and light sizes too; LitScene's part was checked by PhongTracer
-  blurOfRow_.reserve(scene.appearances.size());
-  for (std::uint32_t row = 0; row < scene.appearances.size(); ++row)
-    blurOfRow_.push_back(scene.blurOfRow(row));
-  for (std::uint32_t i = 0; i < scene.lights.size(); ++i) {
-    sizeOfLight_.push_back(scene.sizeOfLight(i));
-    centreOfLight_.push_back(
-        std::visit(Overloaded{[](const DirectionalLight&) { return Point::ZERO; },
-                              [](const PointLight& l) { return l.position; },
-                              [](const SpotLight& l) { return l.position; }},
-                   scene.lights[i]));
+    : WhittedTracer(scene, accelerator, whitted, offset), beams_(beams) {
+  // The materials' beams and the lights' sizes were validated with the scene (PhongTracer).
+  disks_.reserve(scene.lights.size());
+  for (const LightSource& light : scene.lights) {
+    disks_.push_back(
+        std::visit(Overloaded{[](const DirectionalLight&) { return LightDisk{}; },
+                              [](const PointLight& l) {
+                                return LightDisk{l.position, l.radius, l.shadowSamples};
+                              }},
+                   light));
   }
 }
 
 Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
                                  int level, const Double3& kkx, SampleContext& ctx) const {
-  const Blur& blur = blurOfRow_[from.appearanceRow];
-  const BeamSettings& beam = kind == SecondaryKind::Reflected ? blur.reflected : blur.refracted;
+  const Material& m = from.appearance->material;
+  const BeamSettings& beam = kind == SecondaryKind::Reflected ? m.reflectedBeam : m.refractedBeam;
   const bool here = beams_.beamDepth == BeamDepth::EveryBounce || level == settings_.maxLevel;
   if (!here || !beam.isBeam())
     return WhittedTracer::secondaryColor(from, secondary, kind, level, kkx, ctx);
@@ -58,21 +56,21 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
   return Color::unchecked(sum / count);
 }
 
-Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t light,
+Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t lightIndex,
                                   const LightSample& sample, const Double3& k,
                                   SampleContext& ctx) const {
-  const LightSize& size = sizeOfLight_[light];
-  if (!size.isArea()) return ShadowTracer::transmittance(h, light, sample, k, ctx);
+  const LightDisk& light = disks_[lightIndex];
+  if (!light.isArea()) return ShadowTracer::transmittance(h, lightIndex, sample, k, ctx);
   // The disk faces the shaded point: its plane is orthogonal to l (light → point).
   const Frame disk = Frame::around(sample.l.xyz());
-  const Double3& centre = centreOfLight_[light].xyz();
+  const Double3& centre = light.centre.xyz();
   const Sample2 shift = ctx.random.next2D();
-  const int n = size.samples;
+  const int n = light.samples;
   Double3 sum;
   for (int s = 0; s < n; ++s) {
     const Sample2 unit{fraction((s + 0.5) / n + shift.u), fraction(s * INV_PHI + shift.v)};
     const Sample2 d = squareToDisk(unit);
-    const Double3 onDisk = centre + disk.inPlane(d.u * size.radius, d.v * size.radius);
+    const Double3 onDisk = centre + disk.inPlane(d.u * light.radius, d.v * light.radius);
     const Double3 toLight = onDisk - h.point.xyz();
     const double distance = std::sqrt(toLight.lengthSquared());
     // A disk point at the shaded point itself (a light touching a surface) lights it fully.

@@ -32,7 +32,7 @@ Material material(double kD, double kS, int shininess, double kT = 0, double kR 
 
 /// The six faces of the box [lo, hi], each with its vertices counter-clockwise seen from
 /// outside (so every face's normal points out: what refraction needs, see docs/scene-format.md).
-void addBox(GlossyScene& s, const Double3& lo, const Double3& hi, std::uint32_t look) {
+void addBox(LitScene& s, const Double3& lo, const Double3& hi, std::uint32_t look) {
   const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
   s.add(Polygon{Point(x0, y0, z0), Point(x0, y0, z1), Point(x0, y1, z1), Point(x0, y1, z0)},
         look);  // −x
@@ -72,7 +72,7 @@ int GalaxyParams::positionsPerArm() const {
 GalaxySetup galaxy(const GalaxyParams& p) {
   p.validate();
   GalaxySetup g;
-  GlossyScene& s = g.scene;
+  LitScene& s = g.scene;
   s.name = "Glassed Galaxy";
   s.background = Color::BLACK;
 
@@ -86,10 +86,9 @@ GalaxySetup galaxy(const GalaxyParams& p) {
   const std::uint32_t brown = s.addAppearance(Color(80, 40, 5), material(0.5, 0.35, 10));
   addBox(s, {-7, 2, -7}, {19, 4, 15}, brown);
   addBox(s, {-7.5, 0, -7.5}, {19.5, 2, 15.5}, brown);
-  const BeamSettings diffused{12, 0.2, 10};
-  const Blur glassBlur = p.diffusion ? Blur{diffused, diffused} : Blur{};
-  const std::uint32_t glass =
-      s.addAppearance(Color(20, 25, 25), material(0.35, 0.4, 10, 0.85, 0.2), glassBlur);
+  Material glassMaterial = material(0.35, 0.4, 10, 0.85, 0.2);
+  if (p.diffusion) glassMaterial.reflectedBeam = glassMaterial.refractedBeam = {12, 0.2, 10};
+  const std::uint32_t glass = s.addAppearance(Color(20, 25, 25), glassMaterial);
   addBox(s, {-6.5, 4, -6.5}, {18.5, 15, 14.5}, glass);
   const std::uint32_t metal = s.addAppearance(Color(45, 30, 30), material(0.5, 0.35, 10, 0, 0.05));
   constexpr double w = 0.15;  // half the bars' width

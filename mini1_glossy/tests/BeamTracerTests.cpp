@@ -37,10 +37,9 @@ TEST(BeamTracerTests, withoutBlurItIsTheWhittedTracer) {
   // the Whitted tracer, pixel by pixel, and the same ray counts
   for (const CourseScene& entry : reflectionScenes()) {
     const SceneSetup<LitScene> s = entry.make();
-    const GlossyScene glossy(s.scene);
     RayCounts a, b;
     const Image whitted = render(s, WhittedTracer(s.scene), 40, &a);
-    const Image beams = render(s, BeamTracer(glossy), 40, &b);
+    const Image beams = render(s, BeamTracer(s.scene), 40, &b);
     for (int y = 0; y < 40; ++y)
       for (int x = 0; x < 40; ++x)
         ASSERT_TRUE(sameBits(whitted.pixel(x, y), beams.pixel(x, y))) << entry.name;
@@ -59,10 +58,11 @@ TEST(BeamTracerTests, withoutBlurItIsTheWhittedTracer) {
  */
 TEST(BeamTracerTests, glossyBeamConvergesToTheAnalyticFraction) {
   const double r = 1, d = 10, c = 0.3, H = 10;
-  GlossyScene s;
+  LitScene s;
   Material mirror;
   mirror.kR = Double3(1);
-  const std::uint32_t glossy = s.addAppearance(Color::BLACK, mirror, {{d, r, 32}, {}});
+  mirror.reflectedBeam = {d, r, 32};
+  const std::uint32_t glossy = s.addAppearance(Color::BLACK, mirror);
   s.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)), glossy);
   const double x0 = c * H / d;
   s.add(
@@ -97,18 +97,19 @@ TEST(BeamTracerTests, glossyBeamConvergesToTheAnalyticFraction) {
 
 /// Two parallel glossy mirrors facing each other (z = 0 facing up, z = 10 facing down), a ray
 /// between them perpendicular to both; maxLevel 3, no cut-off.
-GlossyScene mirrors() {
-  GlossyScene s;
+LitScene mirrors() {
+  LitScene s;
   Material m;
   m.kR = Double3(1);
-  const std::uint32_t glossy = s.addAppearance(Color(1, 1, 1), m, {{5, 0.1, 10}, {}});
+  m.reflectedBeam = {5, 0.1, 10};
+  const std::uint32_t glossy = s.addAppearance(Color(1, 1, 1), m);
   s.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)), glossy);
   s.add(Plane(Point(0, 0, 10), Vector(0, 0, -1)), glossy);
   return s;
 }
 
 TEST(BeamTracerTests, beamDepth) {
-  const GlossyScene s = mirrors();
+  const LitScene s = mirrors();
   const Ray down(Point(0, 0, 5), Vector(0, 0, -1));
   const auto secondary = [&](BeamDepth depth) {
     const BeamTracer tracer(s, nullptr, {.maxLevel = 3, .minK = 0}, {depth});
@@ -133,15 +134,17 @@ TEST(BeamTracerTests, diffusedGlassBlursWhatIsBehindIt) {
   // nothing. Looking straight down at x = 0 through the pane:
   Material glass;
   glass.kT = Double3(1);
-  const auto pane = [&](const Blur& blur) {
-    GlossyScene g;
-    const std::uint32_t row = g.addAppearance(Color::BLACK, glass, blur);
+  const auto pane = [&](const BeamSettings& refracted) {
+    LitScene g;
+    Material m = glass;
+    m.refractedBeam = refracted;
+    const std::uint32_t row = g.addAppearance(Color::BLACK, m);
     g.add(Polygon{Point(-50, -50, 5), Point(50, -50, 5), Point(50, 50, 5), Point(-50, 50, 5)}, row);
     g.add(Polygon{Point(-50, -50, 0), Point(0, -50, 0), Point(0, 50, 0), Point(-50, 50, 0)},
           Color(200, 200, 200));
     return g;
   };
-  const GlossyScene clear = pane({}), frosted = pane({{}, {5, 1, 16}});
+  const LitScene clear = pane({}), frosted = pane({5, 1, 16});
   // ============ Equivalence Partitions Tests ==============
   // TC01: clear glass at x = -0.5 and x = +0.5: the sharp wall, 200 and 0
   const BeamTracer sharp(clear);
@@ -165,11 +168,14 @@ TEST(BeamTracerTests, allocatesNothing) {
   // TC01: the galaxy's materials on the all-features scene: every shape's material blurs both
   // rays and the lights have sizes; a rendered block allocates nothing
   const SceneSetup<LitScene> base = course::allFeaturesAbove();
-  GlossyScene s(base.scene);
-  s.blur.assign(s.appearances.size(), Blur{{12, 0.2, 4}, {12, 0.2, 4}});
-  s.lightSizes.assign(s.lights.size(), LightSize{});
-  for (std::size_t i = 0; i < s.lights.size(); ++i)
-    if (!std::holds_alternative<DirectionalLight>(s.lights[i])) s.lightSizes[i] = {3, 4};
+  LitScene s = base.scene;
+  for (Appearance& a : s.appearances)
+    a.material.reflectedBeam = a.material.refractedBeam = {12, 0.2, 4};
+  for (LightSource& light : s.lights)
+    if (PointLight* p = std::get_if<PointLight>(&light))
+      p->setRadius(3).setShadowSamples(4);
+    else if (SpotLight* q = std::get_if<SpotLight>(&light))
+      q->setRadius(3).setShadowSamples(4);
   const BeamTracer tracer(s);
   CameraSpec spec = base.camera;
   spec.nX = spec.nY = 24;

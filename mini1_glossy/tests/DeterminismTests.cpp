@@ -26,9 +26,11 @@ struct Fixture {
     p.arms = 7;
     p.perArm = 12;
     GalaxySetup setup = galaxy(p);
-    setup.scene.lightSizes.assign(setup.scene.lights.size(), LightSize{1.5, 4});
-    for (Blur& b : setup.scene.blur)
-      if (b != Blur{}) b = Blur{{12, 0.2, 3}, {12, 0.2, 3}};
+    for (LightSource& light : setup.scene.lights)
+      std::get<SpotLight>(light).setRadius(1.5).setShadowSamples(4);
+    for (Appearance& a : setup.scene.appearances)
+      if (a.material.refractedBeam.isBeam())
+        a.material.reflectedBeam = a.material.refractedBeam = {12, 0.2, 3};
     return setup;
   }();
   BeamTracer tracer{g.scene};

@@ -12,7 +12,7 @@
 namespace rt {
 namespace {
 
-int countSpheres(const GlossyScene& s) {
+int countSpheres(const LitScene& s) {
   int n = 0;
   for (const Geometry& g : s.geometries.shapes()) n += std::holds_alternative<Sphere>(g) ? 1 : 0;
   return n;
@@ -20,7 +20,7 @@ int countSpheres(const GlossyScene& s) {
 
 TEST(GalaxyTests, theSeedsLayout) {
   const GalaxySetup g = galaxy();
-  const GlossyScene& s = g.scene;
+  const LitScene& s = g.scene;
   // ============ Equivalence Partitions Tests ==============
   // TC01: 1 floor + 12 pedestal faces + 6 glass faces + 8 bars x 6 faces = 67 other shapes;
   // 18 arms x 50 stars = 900, the core and its halo, and about 135 suns (3 arms x 50 x 90%)
@@ -47,13 +47,14 @@ TEST(GalaxyTests, theSeedsLayout) {
   }
   EXPECT_EQ((std::set<std::string>{"main", "above", "inside", "side"}), names);
   // TC04: the glass blurs both secondary rays with the seed's beam (N 10, distance 12, radius
-  // 0.2): exactly one row of the table has a blur
+  // 0.2): exactly one row of the table has beams
   int blurred = 0;
-  for (const Blur& b : s.blur)
-    if (b != Blur{}) {
+  for (const Appearance& a : s.appearances)
+    if (a.material.reflectedBeam.isBeam() || a.material.refractedBeam.isBeam()) {
       ++blurred;
-      EXPECT_EQ((BeamSettings{12, 0.2, 10}), b.reflected);
-      EXPECT_EQ((BeamSettings{12, 0.2, 10}), b.refracted);
+      EXPECT_EQ((BeamSettings{12, 0.2, 10}), a.material.reflectedBeam);
+      EXPECT_EQ((BeamSettings{12, 0.2, 10}), a.material.refractedBeam);
+      EXPECT_EQ(Double3(0.85), a.material.kT);
     }
   EXPECT_EQ(1, blurred);
 }
@@ -64,7 +65,7 @@ TEST(GalaxyTests, everyStarIsWithinTheSpiralsReach) {
   // and off it (0.1), plus its own radius; and above the pedestal (y > 4). (As in the seed, the
   // outermost stars of the arms pointing to −x reach a little past the glass wall at x = −6.5:
   // the box is not centred on the galaxy in x.)
-  const GlossyScene s = galaxy().scene;
+  const LitScene s = galaxy().scene;
   const double reach = 1.7 * std::exp(0.25 * 0.15 * 49) + std::sqrt(2 * 0.6 * 0.6) + 0.1;
   int count = 0;
   for (const Geometry& g : s.geometries.shapes()) {
@@ -81,7 +82,7 @@ TEST(GalaxyTests, everyStarIsWithinTheSpiralsReach) {
 TEST(GalaxyTests, boxesFaceOutwards) {
   // TC01: every polygon's normal points away from the centre of the box it belongs to: checked
   // through the box of the glass (faces 13..18): their normals point away from (6, 9.5, 4)
-  const GlossyScene s = galaxy().scene;
+  const LitScene s = galaxy().scene;
   for (std::uint32_t i = 13; i < 19; ++i) {
     const Polygon& face = std::get<Polygon>(s.geometries[i]);
     const Double3 toFace = face.vertices()[0].xyz() - Double3(6, 9.5, 4);
@@ -92,10 +93,10 @@ TEST(GalaxyTests, boxesFaceOutwards) {
 TEST(GalaxyTests, parameters) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: the same parameters give the same scene, sphere for sphere; another seed moves them
-  const GlossyScene a = galaxy().scene, b = galaxy().scene;
+  const LitScene a = galaxy().scene, b = galaxy().scene;
   GalaxyParams other;
   other.seed = 2;
-  const GlossyScene c = galaxy(other).scene;
+  const LitScene c = galaxy(other).scene;
   ASSERT_EQ(a.geometries.size(), b.geometries.size());
   const Point& a80 = std::get<Sphere>(a.geometries[80]).center();
   EXPECT_EQ(a80.xyz(), std::get<Sphere>(b.geometries[80]).center().xyz());
@@ -117,7 +118,10 @@ TEST(GalaxyTests, parameters) {
   // TC04: no diffusion: no blur anywhere
   GalaxyParams clear;
   clear.diffusion = false;
-  for (const Blur& blur : galaxy(clear).scene.blur) EXPECT_EQ(Blur{}, blur);
+  for (const Appearance& look : galaxy(clear).scene.appearances) {
+    EXPECT_FALSE(look.material.reflectedBeam.isBeam());
+    EXPECT_FALSE(look.material.refractedBeam.isBeam());
+  }
   // =============== Boundary Values Tests ==================
   // TC11: one arm of one position: one sphere, the core and the halo
   GalaxyParams one;

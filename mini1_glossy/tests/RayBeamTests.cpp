@@ -168,24 +168,5 @@ TEST(RayBeamTests, deterministicAndCheap) {
   EXPECT_GT(sum, 79);
 }
 
-TEST(RayBeamTests, settingsValidation) {
-  // TC01: the defaults and the galaxy's glass are valid
-  EXPECT_NO_THROW(BeamSettings{}.validate("beam"));
-  EXPECT_NO_THROW((BeamSettings{12, 0.2, 10}.validate("beam")));
-  // TC11: distance 0, a negative radius, grid 0 and MAX_GRID + 1: refused, naming the field
-  EXPECT_THROW((BeamSettings{0, 0.2, 10}.validate("beam")), std::invalid_argument);
-  try {
-    BeamSettings{1, -0.5, 10}.validate("material glass refracted");
-    ADD_FAILURE() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ("material glass refracted: radius must be a non-negative finite number, got -0.5",
-                 e.what());
-  }
-  EXPECT_THROW((BeamSettings{1, 0.2, 0}.validate("beam")), std::invalid_argument);
-  EXPECT_THROW((BeamSettings{1, 0.2, BeamSettings::MAX_GRID + 1}.validate("beam")),
-               std::invalid_argument);
-  EXPECT_NO_THROW((BeamSettings{1, 0.2, BeamSettings::MAX_GRID}.validate("beam")));
-}
-
 }  // namespace
 }  // namespace rt

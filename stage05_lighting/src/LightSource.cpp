@@ -17,7 +17,7 @@ namespace {
 /// I = I0 / (kC + kL·d + kQ·d²). nullopt when p is the light's position (l undefined there).
 std::optional<LightSample> pointSample(const PointLight& light, const Point& p) noexcept {
   const Double3 toPoint = p.xyz() - light.position.xyz();
-  // The same test the Vector constructor makes, so that Vector(toPoint) below cannot throw.
+  // The same test the Vector constructor makes: the direction below is never the zero vector.
   if (toPoint.isZero()) return std::nullopt;
   const double d2 = toPoint.lengthSquared();
   const double d = std::sqrt(d2);
@@ -43,6 +43,13 @@ void validateAttenuation(const char* name, const PointLight& light) {
     fail(name, "kL", "a non-negative finite number", light.kL);
   if (!(std::isfinite(light.kQ) && light.kQ >= 0))
     fail(name, "kQ", "a non-negative finite number", light.kQ);
+  if (!(std::isfinite(light.radius) && light.radius >= 0))
+    fail(name, "radius", "a non-negative finite number", light.radius);
+  if (light.shadowSamples < 1 || light.shadowSamples > PointLight::MAX_SHADOW_SAMPLES) {
+    throw std::invalid_argument(std::string(name) + ": shadowSamples must be between 1 and " +
+                                std::to_string(PointLight::MAX_SHADOW_SAMPLES) + ", got " +
+                                std::to_string(light.shadowSamples));
+  }
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "primitives/Checks.h"
+
 namespace rt {
 
 namespace {
@@ -15,6 +17,20 @@ void requireCoefficient(const char* field, const Double3& k) {
                                 k.str());
   }
 }
+void requireBeam(const char* field, const BeamSettings& beam) {
+  const std::string what = std::string("Material: ") + field;
+  requirePositive(beam.distance, what, "distance");
+  if (!(std::isfinite(beam.radius) && beam.radius >= 0)) {
+    throw std::invalid_argument(what + ": radius must be a non-negative finite number, got " +
+                                formatNumber(beam.radius));
+  }
+  if (beam.grid < 1 || beam.grid > BeamSettings::MAX_GRID) {
+    throw std::invalid_argument(what + ": grid must be between 1 and " +
+                                std::to_string(BeamSettings::MAX_GRID) + ", got " +
+                                std::to_string(beam.grid));
+  }
+}
+
 }  // namespace
 
 void Material::validate() const {
@@ -30,6 +46,8 @@ void Material::validate() const {
     throw std::invalid_argument("Material: ior must be a positive finite number, got " +
                                 formatNumber(ior));
   }
+  requireBeam("reflectedBeam", reflectedBeam);
+  requireBeam("refractedBeam", refractedBeam);
 }
 
 }  // namespace rt

@@ -176,6 +176,37 @@ TEST(SpotLightTests, illuminate) {
   EXPECT_TRUE(colorNear(s->intensity, 100, 200, 300));
 }
 
+TEST(LightSourceTests, sizeForSoftShadows) {
+  // The radius and shadowSamples of point and spot lights are data for mini project 1's soft
+  // shadows; validate checks them with the light.
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the defaults are the course's point light: radius 0, one sample
+  const PointLight point(Color::WHITE, Point::ZERO);
+  EXPECT_EQ(0.0, point.radius);
+  EXPECT_EQ(1, point.shadowSamples);
+  // TC02: a spot light of radius 2 with 64 samples is accepted, and illuminates as before
+  const SpotLight sized = SpotLight(Color(100, 100, 100), Point::ZERO, Vector(0, 0, -1))
+                              .setRadius(2)
+                              .setShadowSamples(64);
+  EXPECT_NO_THROW(validate(sized));
+  EXPECT_NEAR(100, illuminate(sized, Point(0, 0, -1))->intensity.r(), 1e-12);
+  // =============== Boundary Values Tests ==================
+  // TC11: a negative radius, naming the light, the field and the value
+  EXPECT_STREQ("PointLight: radius must be a non-negative finite number, got -1",
+               invalidArgumentMessage([] {
+                 validate(PointLight(Color::WHITE, Point::ZERO).setRadius(-1));
+               }).c_str());
+  // TC12: 0 samples and one more than the largest
+  EXPECT_STREQ(
+      "SpotLight: shadowSamples must be between 1 and 4096, got 0",
+      invalidArgumentMessage([] {
+        validate(SpotLight(Color::WHITE, Point::ZERO, Vector(0, 0, -1)).setShadowSamples(0));
+      }).c_str());
+  EXPECT_THROW(validate(PointLight(Color::WHITE, Point::ZERO).setShadowSamples(4097)),
+               std::invalid_argument);
+  EXPECT_NO_THROW(validate(PointLight(Color::WHITE, Point::ZERO).setShadowSamples(4096)));
+}
+
 TEST(LightSourceTests, validate) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: the course's lights as used in LightsTests are accepted

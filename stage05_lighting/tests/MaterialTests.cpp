@@ -96,6 +96,38 @@ TEST(MaterialTests, validate) {
   EXPECT_NO_THROW(m.validate());
 }
 
+TEST(MaterialTests, beams) {
+  // The beams are data for mini project 1's glossy surfaces and diffused glass; validate checks
+  // them with the material.
+  Material m;
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: no beam by default; the galaxy's glass (distance 12, radius 0.2, grid 10) is valid
+  EXPECT_FALSE(m.reflectedBeam.isBeam());
+  EXPECT_FALSE(m.refractedBeam.isBeam());
+  m.refractedBeam = {12, 0.2, 10};
+  EXPECT_TRUE(m.refractedBeam.isBeam());
+  EXPECT_NO_THROW(m.validate());
+  // =============== Boundary Values Tests ==================
+  // TC11: a grid of 1 or a radius of 0 is no beam (the course's single ray), and is valid
+  EXPECT_FALSE((BeamSettings{12, 0.2, 1}.isBeam()));
+  EXPECT_FALSE((BeamSettings{12, 0, 10}.isBeam()));
+  // TC12: distance 0, a negative radius, grid 0 and MAX_GRID + 1: refused, naming the beam and
+  // the field
+  m.refractedBeam = {0, 0.2, 10};
+  EXPECT_STREQ("Material: refractedBeam: distance must be a positive finite number, got 0",
+               invalidArgumentMessage([&] { m.validate(); }).c_str());
+  m.refractedBeam = {1, 0.2, 10};
+  m.reflectedBeam = {1, -0.5, 10};
+  EXPECT_STREQ("Material: reflectedBeam: radius must be a non-negative finite number, got -0.5",
+               invalidArgumentMessage([&] { m.validate(); }).c_str());
+  m.reflectedBeam = {1, 0.2, 0};
+  EXPECT_THROW(m.validate(), std::invalid_argument);
+  m.reflectedBeam = {1, 0.2, BeamSettings::MAX_GRID + 1};
+  EXPECT_THROW(m.validate(), std::invalid_argument);
+  m.reflectedBeam = {1, 0.2, BeamSettings::MAX_GRID};
+  EXPECT_NO_THROW(m.validate());
+}
+
 TEST(LitSceneTests, addKeepsAppearancesAligned) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: add() appends the shape and its appearance at the same index

@@ -114,7 +114,7 @@ TEST(RoundTripTest, AwkwardNumbers) {
   const double third = 1.0 / 3;
   doc.scene.add(
       Sphere(Point(0.1, -0.0, 1e-300), third), Color(0.1, 1e300, 0),
-      Material{Double3(third), Double3(0.1, 0.2, 0.3), Double3(0), Double3(-0.0), 7, 1.1});
+      Material{Double3(third), Double3(0.1, 0.2, 0.3), Double3(0), Double3(-0.0), 7, 1.1, {}, {}});
   doc.scene.add(Sphere(Point(9007199254740993.0, 1e22, -2.5e-8), 1e-7));
   doc.render.minK = 1e-9;
   const std::string dump1 = dumpScene(doc);
@@ -196,7 +196,8 @@ TEST(ToJsonTest, RejectsDocumentsThatCannotBeWritten) {
   EXPECT_THROW((void)toJson(unknownName), std::logic_error);
   // EP03: a geometry naming a material but carrying another one.
   SceneDocument mismatch = unknownName;
-  mismatch.materials["glass"] = Material{Double3(0), Double3(0), Double3(0.5), Double3(0), 0, 1.5};
+  mismatch.materials["glass"] =
+      Material{Double3(0), Double3(0), Double3(0.5), Double3(0), 0, 1.5, {}, {}};
   EXPECT_THROW((void)toJson(mismatch), std::logic_error);
   // EP04: a name for a geometry that does not exist.
   SceneDocument tooManyNames = baseDocument();

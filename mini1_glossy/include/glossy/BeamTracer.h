@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "glossy/GlossyScene.h"
 #include "glossy/RayBeam.h"
+#include "lighting/LitScene.h"
 #include "reflections/WhittedTracer.h"
 
 namespace rt {
@@ -26,9 +26,9 @@ struct BeamTracerSettings {
 /// WhittedTracer plus ray beams and soft shadows (tracer `beams`).
 ///
 ///   secondary ray of a material with a beam  →  the average of the beam's rays' colours
-///                                               (RayBeam.h), each one the Whitted tracer's
-///   light with a size (radius r, S samples)  →  the transmittance averaged over S shadow rays
-///                                               to points of the disk of radius r centred on
+///   (Material::reflectedBeam/refractedBeam)     (RayBeam.h), each one the Whitted tracer's
+///   light with a size (PointLight::radius r,  →  the transmittance averaged over S shadow rays
+///   shadowSamples S)                            to points of the disk of radius r centred on
 ///                                               the light and facing the shaded point
 ///
 /// The light's intensity and direction (the Phong terms) stay those of its centre: only its
@@ -43,7 +43,7 @@ class BeamTracer : public WhittedTracer {
  public:
   /// @param scene must outlive the tracer.
   /// @throws what scene.validate() throws; std::invalid_argument for invalid settings.
-  explicit BeamTracer(const GlossyScene& scene, const Intersectable* accelerator = nullptr,
+  explicit BeamTracer(const LitScene& scene, const Intersectable* accelerator = nullptr,
                       const WhittedSettings& whitted = {}, const BeamTracerSettings& beams = {},
                       const RayOffset& offset = RayOffset{});
 
@@ -60,14 +60,16 @@ class BeamTracer : public WhittedTracer {
                         const Double3& k, SampleContext& ctx) const override;
 
  private:
-  const GlossyScene& glossy_;
+  /// A light's disk, computed once per light: radius 0 or one sample is a point.
+  struct LightDisk {
+    Point centre = Point::ZERO;
+    double radius = 0;
+    int samples = 1;
+    bool isArea() const noexcept { return radius > 0 && samples > 1; }
+  };
+
   BeamTracerSettings beams_;
-  /// Per appearance row (all rows, computed once): its blur.
-  std::vector<Blur> blurOfRow_;
-  /// Per light (all lights, computed once): its size, and its centre (for point and spot
-  /// lights).
-  std::vector<LightSize> sizeOfLight_;
-  std::vector<Point> centreOfLight_;
+  std::vector<LightDisk> disks_;  ///< per light
 };
 
 }  // namespace rt

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "camera/CameraSpec.h"
-#include "glossy/GlossyScene.h"
+#include "lighting/LitScene.h"
 
 namespace rt {
 
@@ -39,7 +39,7 @@ struct NamedView {
 };
 
 struct GalaxySetup {
-  GlossyScene scene;
+  LitScene scene;
   CameraSpec camera;  ///< the seed's view: from (100,27,22) at (4,8,4), 1280 x 720
   /// Points of view of the same scene: "main" (the seed's, the same as camera), "above",
   /// "inside" (through the glass, close to the stars) and "side".

@@ -26,31 +26,12 @@
 #include <cstdint>
 
 #include "glossy/Frame.h"
+#include "lighting/Material.h"
 #include "primitives/Random.h"
 #include "primitives/Util.h"
 #include "primitives/Vector.h"
 
 namespace rt {
-
-/// How one kind of secondary ray of a material spreads into a beam.
-struct BeamSettings {
-  /// The largest grid accepted: 64 × 64 cells (≈ 3217 rays per beam).
-  static constexpr int MAX_GRID = 64;
-
-  double distance = 1;  ///< from the ray's origin to the target circle's centre, > 0
-  double radius = 0;    ///< of the target circle, >= 0; 0: no beam
-  int grid = 1;         ///< N of the N × N grid, 1..MAX_GRID; 1: no beam
-
-  /// True when the settings make a beam of more than one ray.
-  bool isBeam() const noexcept { return grid > 1 && radius > 0; }
-
-  /// @throws std::invalid_argument "<what>: distance must be ..." for a distance that is not a
-  ///         positive finite number, a negative or non-finite radius, or a grid outside
-  ///         1..MAX_GRID.
-  void validate(const char* what) const;
-
-  bool operator==(const BeamSettings&) const = default;
-};
 
 /// True when the centre of cell (i, j) of an N × N grid lies inside the grid's inscribed circle.
 /// In units of half a cell the centres sit at odd coordinates −N+1 … N−1 and the radius is N, so
@@ -63,6 +44,8 @@ constexpr bool cellInBeam(int i, int j, int grid) noexcept {
 /// The number of cells of an N × N grid whose centres lie inside the inscribed circle: the rays
 /// of a full beam (fewer when some are on the wrong side). 1 for N = 1. About π/4·N².
 int beamCellCount(int grid) noexcept;
+
+/// A material's BeamSettings (lighting/Material.h: distance d, radius r, grid N) describe a beam.
 
 /// Calls visit(direction) for every ray of the beam around the unit direction main, leaving a
 /// surface of unit normal n, and returns how many there were. Without a beam

@@ -19,10 +19,19 @@ struct DirectionalLight {
 };
 
 /// A point light with attenuation I0 / (kC + kL·d + kQ·d²).
+///
+/// radius and shadowSamples are plain data here, used by the first mini project's soft shadows:
+/// a light of radius r > 0 is a disk sampled by that many shadow rays (see
+/// mini1_glossy/README.md). The default, radius 0 and one sample, is the course's point light.
 struct PointLight {
+  /// The most shadow rays one light may cast per shaded point.
+  static constexpr int MAX_SHADOW_SAMPLES = 4096;
+
   Color intensity;
   Point position;
   double kC = 1, kL = 0, kQ = 0;
+  double radius = 0;      ///< >= 0; 0: a point
+  int shadowSamples = 1;  ///< 1..MAX_SHADOW_SAMPLES
   PointLight(const Color& i, const Point& p) : intensity(i), position(p) {}
   PointLight& setKc(double v) {
     kC = v;
@@ -34,6 +43,14 @@ struct PointLight {
   }
   PointLight& setKq(double v) {
     kQ = v;
+    return *this;
+  }
+  PointLight& setRadius(double r) {
+    radius = r;
+    return *this;
+  }
+  PointLight& setShadowSamples(int n) {
+    shadowSamples = n;
     return *this;
   }
 };
@@ -61,6 +78,14 @@ struct SpotLight : PointLight {
     narrowBeam = v;
     return *this;
   }
+  SpotLight& setRadius(double r) {
+    radius = r;
+    return *this;
+  }
+  SpotLight& setShadowSamples(int n) {
+    shadowSamples = n;
+    return *this;
+  }
 };
 
 using LightSource = std::variant<DirectionalLight, PointLight, SpotLight>;
@@ -78,7 +103,8 @@ struct LightSample {
 std::optional<LightSample> illuminate(const LightSource& light, const Point& p) noexcept;
 
 /// @throws std::invalid_argument for negative or non-finite attenuation factors, an attenuation
-///         that is zero at distance 0 (kC = 0), or a negative narrowBeam; names the field.
+///         that is zero at distance 0 (kC = 0), a negative narrowBeam, a negative or non-finite
+///         radius or shadowSamples outside 1..MAX_SHADOW_SAMPLES; names the field.
 void validate(const LightSource& light);
 
 }  // namespace rt
