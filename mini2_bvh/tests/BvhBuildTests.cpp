@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -25,7 +26,9 @@ int expectValidTree(const Bvh& bvh, const Geometries& scene) {
   const auto nodes = bvh.nodes();
   std::vector<int> seen(scene.size(), 0);
   for (std::uint32_t i : bvh.unboundedShapes()) {
-    EXPECT_FALSE(boundingBox(scene[i]).has_value()) << "shape " << i << " is bounded";
+    const std::optional<Aabb> box = boundingBox(scene[i]);
+    EXPECT_TRUE(!box || !std::isfinite(conservativeBox(*box).widen().surfaceArea()))
+        << "shape " << i << " has a float box";
     ++seen[i];
   }
   int leaves = 0, deepest = 0;
@@ -146,6 +149,13 @@ TEST(BvhBuildTests, degenerateScenes) {
   ASSERT_EQ(kinds.nodes().size(), 3u);
   EXPECT_FALSE(kinds.nodes()[0].isLeaf());
   expectValidTree(kinds, mixed);
+  // TC18: a sphere beyond the float range (x = 1e39) is kept outside the tree, like a plane
+  Geometries far;
+  far.add(Sphere(Point(0, 0, 0), 1), Sphere(Point(1e39, 0, 0), 1), Sphere(Point(5, 0, 0), 1));
+  const Bvh beyond(far);
+  ASSERT_EQ(beyond.unboundedShapes().size(), 1u);
+  EXPECT_EQ(beyond.unboundedShapes()[0], 1u);
+  expectValidTree(beyond, far);
   // TC16: spheres at x = 2^i, radius 2^(i-1) (each far from all the smaller ones): the SAH
   // peels off a few at a time, yet the depth stays far below the stack's size
   Geometries spread;

@@ -52,18 +52,24 @@ TEST(QueryCountTests, cbr) {
 }
 
 TEST(QueryCountTests, bvh) {
-  // TC01: on the small scene, the closest hit along x tests the plane and S0 only, visiting at
-  // least the root; all hits along x test the plane, S0 and S1
+  // TC01: three spheres make one leaf (a split costs at least TRAVERSAL_COST = 3 tests, a leaf
+  // of three 3): the closest hit along x visits that node and tests the plane and the three
+  // spheres; all hits along x, the same
   const Geometries scene = threeSpheresAndAFloor();
   const Bvh bvh(scene);
+  ASSERT_EQ(bvh.nodes().size(), 1u);
   QueryCounts counts;
   ASSERT_EQ(bvh.closestHit(kAlongX, INFINITE_DISTANCE, &counts)->geometry, 0u);
-  EXPECT_EQ(counts.shapeTests, 2u);
-  EXPECT_GE(counts.nodesVisited, 1u);
+  EXPECT_EQ(counts, (QueryCounts{4, 1}));
   QueryCounts all;
   bvh.forEachHit(
       kAlongX, INFINITE_DISTANCE, [](const Hit&) { return true; }, &all);
-  EXPECT_EQ(all.shapeTests, 3u);
+  EXPECT_EQ(all, (QueryCounts{4, 1}));
+  // TC11: a ray above the leaf's box: the box is tested, no sphere (only the plane)
+  QueryCounts above;
+  EXPECT_FALSE(bvh.closestHit(Ray(Point(-5, 20, 0), Vector(1, 0, 0)), INFINITE_DISTANCE, &above)
+                   .has_value());
+  EXPECT_EQ(above, (QueryCounts{1, 1}));
   // TC02: on 5000 random spheres, 1000 rays test under 2 % of the shapes the linear scan tests
   test::Random random(7);
   const Aabb box(Double3(-50), Double3(50));

@@ -11,7 +11,9 @@
 /// box is its exact box padded by 2^-20 of its largest coordinate (about eight float ulps of that
 /// coordinate), then rounded outwards to floats: conservativeBox below.
 
+#include <algorithm>
 #include <array>
+#include <limits>
 
 #include "bvh/Aabb.h"
 
@@ -20,6 +22,21 @@ namespace rt {
 struct FloatBox {
   std::array<float, 3> lo;
   std::array<float, 3> hi;
+
+  /// The empty box (lo = +∞, hi = −∞), the identity of expand.
+  static constexpr FloatBox empty() noexcept {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    return FloatBox{{inf, inf, inf}, {-inf, -inf, -inf}};
+  }
+
+  /// Grows the box to hold b: the union, exact (a minimum or maximum of floats is a float).
+  constexpr FloatBox& expand(const FloatBox& b) noexcept {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], b.lo[a]);
+      hi[a] = std::max(hi[a], b.hi[a]);
+    }
+    return *this;
+  }
 
   /// The smallest float box holding b: each bound rounded outwards (down for lo, up for hi), so
   /// it is exact when the bounds are floats already; bounds beyond the float range become ±∞.
