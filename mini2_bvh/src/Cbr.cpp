@@ -32,7 +32,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
     nearest.offer(intersectRoots(shapes_[s.geometry], ray), s.geometry);
     ++tests;
   }
-  if (counts != nullptr) counts->shapeTests += tests;
+  if (counts != nullptr) *counts += QueryCounts{tests, bounded_.size()};
   return nearest.hit();
 }
 
@@ -45,14 +45,16 @@ bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
   }
   const SlabRay slab(ray);
   const double limit = slabLimit(tMax);
+  std::uint64_t boxes = 0;
   for (std::size_t k = 0; complete && k < bounded_.size(); ++k) {
     const BoxedShape& s = bounded_[k];
+    ++boxes;
     double entry;
     if (!slabHit(slab, s.box, limit, entry)) continue;
     ++tests;
     complete = visitHits(intersectRoots(shapes_[s.geometry], ray), s.geometry, tMax, visit);
   }
-  if (counts != nullptr) counts->shapeTests += tests;
+  if (counts != nullptr) *counts += QueryCounts{tests, boxes};
   return complete;
 }
 

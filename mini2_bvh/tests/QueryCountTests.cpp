@@ -26,13 +26,14 @@ TEST(QueryCountTests, cbr) {
   const Geometries scene = threeSpheresAndAFloor();
   const Cbr cbr(scene);
   // ============ Equivalence Partitions Tests ==============
-  // TC01: closest hit along x: the plane (no box) and S0 are tested; S1's box is entered at
-  // t ≈ 14, after S0's hit at t = 4; S2's box is missed (2 tests; the linear scan makes 4)
+  // TC01: closest hit along x: the three boxes are tested; the plane (no box) and S0 are tested;
+  // S1's box is entered at t ≈ 14, after S0's hit at t = 4; S2's box is missed (2 tests; the
+  // linear scan makes 4)
   QueryCounts counts;
   const auto hit = cbr.closestHit(kAlongX, INFINITE_DISTANCE, &counts);
   ASSERT_TRUE(hit.has_value());
   EXPECT_EQ(hit->geometry, 0u);
-  EXPECT_EQ(counts, (QueryCounts{2, 0}));
+  EXPECT_EQ(counts, (QueryCounts{2, 3}));
   QueryCounts linear;
   scene.closestHit(kAlongX, INFINITE_DISTANCE, &linear);
   EXPECT_EQ(linear.shapeTests, 4u);
@@ -40,15 +41,15 @@ TEST(QueryCountTests, cbr) {
   QueryCounts all;
   cbr.forEachHit(
       kAlongX, INFINITE_DISTANCE, [](const Hit&) { return true; }, &all);
-  EXPECT_EQ(all, (QueryCounts{3, 0}));
+  EXPECT_EQ(all, (QueryCounts{3, 3}));
   // =============== Boundary Values Tests ==================
   // TC11: tMax before S0's box: only the plane is tested
   QueryCounts shortRay;
   EXPECT_FALSE(cbr.closestHit(kAlongX, 3, &shortRay).has_value());
-  EXPECT_EQ(shortRay, (QueryCounts{1, 0}));
+  EXPECT_EQ(shortRay, (QueryCounts{1, 3}));
   // TC12: counts add up over queries
   cbr.closestHit(kAlongX, 3, &shortRay);
-  EXPECT_EQ(shortRay, (QueryCounts{2, 0}));
+  EXPECT_EQ(shortRay, (QueryCounts{2, 6}));
 }
 
 TEST(QueryCountTests, bvh) {

@@ -25,7 +25,8 @@ class Cbr final : public Intersectable {
   explicit Cbr(const Geometries& geometries) : Cbr(geometries.shapes()) {}
   Cbr(Geometries&&) = delete;  // would view a temporary
 
-  /// The same answer as Geometries::closestHit over the same shapes, bit for bit.
+  /// The same answer as Geometries::closestHit over the same shapes, bit for bit. Counts each
+  /// box it tests as a visited node (a CBR is a hierarchy one level deep) and each exact test.
   std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE,
                                 QueryCounts* counts = nullptr) const noexcept override;
   /// The same hits as Geometries::forEachHit over the same shapes.
