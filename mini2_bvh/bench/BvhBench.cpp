@@ -9,8 +9,8 @@
 //    CBR's one box per shape) and the shapes tested per ray. The linear scan and the CBR get a
 //    subset of the fan (about 5·10^7 shape tests), and their answers are compared with the BVH's on
 //    that subset.
-// 2. An approximation of the course's "glassed galaxy" (about 1100 spheres, 66 polygons and a
-//    plane, camera and resolution of the report): primary rays of the full 1280 × 720 image.
+// 2. The spheres of the course's "glassed galaxy" (about 1040 spheres; with the floor, then
+//    alone), with the camera and resolution of the report: the 1280 × 720 primary rays.
 // 3. Memory for the largest random scene, measured first: the scene, the BVH, and the build's
 //    peak (the process's peak resident size, reset before the build; Linux only).
 // Single-threaded; query rates are from the fastest of several passes, in the thread's CPU time.
@@ -175,32 +175,17 @@ void randomScenes(const std::vector<std::uint32_t>& sizes) {
   }
 }
 
-// ---- An approximation of the course's "glassed galaxy" (course-catalogue.md §6) ----
+// ---- The spheres of the course's "glassed galaxy" (course-catalogue.md §6) ----
+// An approximation made here: the floor and the galaxy's spheres, without the pedestal, the glass
+// box and the frame (66 polygons; the glass box would end most primary rays at its face, which is
+// the easy case). Once mini1_glossy, whose galaxy() generates the whole scene at any star count,
+// lies below this stage, that generator should replace this one.
 
-/// An axis-aligned box of six polygons.
-void addBox(Geometries& g, const Double3& lo, const Double3& hi) {
-  const double x0 = lo.x, y0 = lo.y, z0 = lo.z, x1 = hi.x, y1 = hi.y, z1 = hi.z;
-  g.add(Polygon({Point(x0, y0, z0), Point(x0, y1, z0), Point(x1, y1, z0), Point(x1, y0, z0)}),
-        Polygon({Point(x0, y0, z1), Point(x1, y0, z1), Point(x1, y1, z1), Point(x0, y1, z1)}),
-        Polygon({Point(x0, y0, z0), Point(x1, y0, z0), Point(x1, y0, z1), Point(x0, y0, z1)}),
-        Polygon({Point(x0, y1, z0), Point(x0, y1, z1), Point(x1, y1, z1), Point(x1, y1, z0)}),
-        Polygon({Point(x0, y0, z0), Point(x0, y0, z1), Point(x0, y1, z1), Point(x0, y1, z0)}),
-        Polygon({Point(x1, y0, z0), Point(x1, y1, z0), Point(x1, y1, z1), Point(x1, y0, z1)}));
-}
-
-Geometries galaxy() {
+/// With the floor, most primary rays end on it before they reach the tree; without it, every
+/// ray that does not meet a star crosses the whole galaxy.
+Geometries galaxy(bool floor) {
   Geometries g;
-  g.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)));
-  addBox(g, Double3(-7, 2, -7), Double3(19, 4, 15));           // pedestal, top
-  addBox(g, Double3(-7.5, 0, -7.5), Double3(19.5, 2, 15.5));   // pedestal, bottom
-  addBox(g, Double3(-6.5, 4, -6.5), Double3(18.5, 15, 14.5));  // glass
-  for (double x : {-6.5, 18.5})                                // corner posts
-    for (double z : {-6.5, 14.5})
-      addBox(g, Double3(x - 0.15, 4, z - 0.15), Double3(x + 0.15, 15.15, z + 0.15));
-  for (double z : {-6.5, 14.5})  // top edges along x
-    addBox(g, Double3(-6.5, 14.85, z - 0.15), Double3(18.5, 15.15, z + 0.15));
-  for (double x : {-6.5, 18.5})  // top edges along z
-    addBox(g, Double3(x - 0.15, 14.85, -6.5), Double3(x + 0.15, 15.15, 14.5));
+  if (floor) g.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)));
   const Double3 centre(4, 8, 4);
   g.add(Sphere(Point(centre), 1), Sphere(Point(centre), 1.3));  // core and halo
   test::Random random(2024);
@@ -226,14 +211,16 @@ Geometries galaxy() {
   return g;
 }
 
-void galaxyScene() {
-  const Geometries scene = galaxy();
+void galaxyScene(bool floor) {
+  const Geometries scene = galaxy(floor);
+  const char* name = floor ? "galaxy" : "stars";
   std::uint32_t spheres = 0;
   for (const Geometry& shape : scene.shapes()) spheres += std::holds_alternative<Sphere>(shape);
   const double buildStart = threadSeconds();
   const Bvh bvh(scene);
-  std::printf("\nGalaxy (approximation): %u shapes, %u spheres; BVH built in %.2f ms, %zu nodes\n",
-              scene.size(), spheres, 1e3 * (threadSeconds() - buildStart), bvh.nodes().size());
+  std::printf("\n%s: %u shapes, %u spheres; BVH built in %.2f ms, %zu nodes\n",
+              floor ? "Galaxy spheres and the floor" : "Galaxy spheres alone", scene.size(),
+              spheres, 1e3 * (threadSeconds() - buildStart), bvh.nodes().size());
   const Camera camera = Camera::builder()
                             .setLocation(Point(100, 27, 22))
                             .setDirection(Point(4, 8, 4), Vector(0, 1, 0))
@@ -247,7 +234,7 @@ void galaxyScene() {
     for (int j = 0; j < 1280; ++j) rays.push_back(camera.constructRay(1280, 720, j, i));
   std::printf("%-12s %-8s %9s %12s %10s %10s\n", "scene", "method", "rays", "rays/s", "boxes/ray",
               "tests/ray");
-  compareMethods("galaxy", scene, bvh, rays, 16);
+  compareMethods(name, scene, bvh, rays, 16);
 
   // The renderer's loop with a trivial shader: make the camera ray, find the closest hit, keep
   // the shape index as the "colour".
@@ -261,7 +248,7 @@ void galaxyScene() {
           sink += hit->geometry;
     seconds = std::min(seconds, threadSeconds() - start);
   }
-  std::printf("galaxy, BVH, camera ray + closest hit + trivial shader: %.0f rays/s (sink %llu)\n",
+  std::printf("%s, BVH, camera ray + closest hit + trivial shader: %.0f rays/s (sink %llu)\n", name,
               1280 * 720 / seconds, static_cast<unsigned long long>(sink));
 }
 
@@ -317,6 +304,9 @@ int main(int argc, char** argv) {
   // Memory first, while the process has freed nothing that malloc could reuse.
   if (!sizes.empty()) rt::memory(*std::max_element(sizes.begin(), sizes.end()));
   if (!sizes.empty()) rt::randomScenes(sizes);
-  if (galaxy) rt::galaxyScene();
+  if (galaxy) {
+    rt::galaxyScene(true);
+    rt::galaxyScene(false);
+  }
   return 0;
 }
