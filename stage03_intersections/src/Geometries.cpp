@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "intersections/HitRules.h"
+
 namespace rt {
 
 std::uint32_t Geometries::add(Geometry shape) {
@@ -11,16 +13,11 @@ std::uint32_t Geometries::add(Geometry shape) {
 
 std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
                                           QueryCounts* counts) const noexcept {
-  std::optional<Hit> best;
-  for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
-    const Roots roots = intersectRoots(shapes_[i], ray);
-    // Roots are ascending: the first is this shape's nearest. Shapes come in index order, so a
-    // strictly nearer hit is needed to replace the best one: equal t keeps the smaller index.
-    if (!roots.empty() && withinDistance(roots[0], tMax) && (!best || roots[0] < best->t))
-      best = Hit{roots[0], i};
-  }
+  NearestHit nearest(tMax);
+  for (std::uint32_t i = 0; i < shapes_.size(); ++i)
+    nearest.offer(intersectRoots(shapes_[i], ray), i);
   if (counts != nullptr) counts->shapeTests += shapes_.size();
-  return best;
+  return nearest.hit();
 }
 
 bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
@@ -29,13 +26,7 @@ bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
   bool complete = true;
   for (std::uint32_t i = 0; i < shapes_.size() && complete; ++i) {
     ++tested;
-    for (double t : intersectRoots(shapes_[i], ray)) {
-      if (!withinDistance(t, tMax)) break;
-      if (!visit(Hit{t, i})) {
-        complete = false;
-        break;
-      }
-    }
+    complete = visitHits(intersectRoots(shapes_[i], ray), i, tMax, visit);
   }
   if (counts != nullptr) counts->shapeTests += tested;
   return complete;

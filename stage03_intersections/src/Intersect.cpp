@@ -78,11 +78,10 @@ void addQuadraticRoots(double a, double b, double c, Roots& roots) noexcept {
 
 }  // namespace
 
-Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
+Roots intersectSphereRoots(const Double3& centre, double r, const Ray& ray) noexcept {
   // u = O - P0, tm = dir·u, d² = |u|² - tm²; th = √(r² - d²); t = tm ∓ th.
   Roots roots;
-  const Double3 u = s.center().xyz() - ray.head().xyz();
-  const double r = s.radius();
+  const Double3 u = centre - ray.head().xyz();
   if (u.isZero()) {  // the head is the centre: one hit at distance r
     roots.add(r);
     return roots;
@@ -94,6 +93,10 @@ Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
   roots.add(tm - th);
   roots.add(tm + th);
   return roots;
+}
+
+Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
+  return intersectSphereRoots(s.center().xyz(), s.radius(), ray);
 }
 
 Roots intersectRoots(const Plane& p, const Ray& ray) noexcept {

@@ -113,5 +113,31 @@ TEST(SphereIntersectionTests, maxDistance) {
   EXPECT_TRUE(hits(kSphere, ray, {}, 1 - 1e-9));
 }
 
+TEST(SphereIntersectionTests, bareDataSolver) {
+  // intersectSphereRoots(centre, radius, ray) is the solver intersectRoots(Sphere) runs: the
+  // same roots, bit for bit (a structure storing spheres compactly relies on it).
+  auto same = [](const Roots& a, const Roots& b) {
+    if (a.size() != b.size()) return false;
+    for (int i = 0; i < a.size(); ++i)
+      if (a[i] != b[i]) return false;
+    return true;
+  };
+  const Double3 centre = kSphere.center().xyz();
+  // TC01: a ray crossing the sphere twice (gp1, gp2)
+  const Ray crossing(Point(-1, 0, 0), Vector(3, 1, 0));
+  EXPECT_TRUE(same(intersectSphereRoots(centre, 1, crossing), intersectRoots(kSphere, crossing)));
+  EXPECT_EQ(intersectSphereRoots(centre, 1, crossing).size(), 2);
+  // TC02: a ray from inside (one root)
+  const Ray inside(Point(1, 0.5, 0), Vector(0, 1, 0));
+  EXPECT_TRUE(same(intersectSphereRoots(centre, 1, inside), intersectRoots(kSphere, inside)));
+  // TC03: a ray that misses (no root)
+  const Ray missing(Point(-1, 0, 0), Vector(1, 1, 0));
+  EXPECT_TRUE(intersectSphereRoots(centre, 1, missing).empty());
+  // TC11: a ray from the centre (the one root r)
+  const Ray fromCentre(Point(1, 0, 0), Vector(0, 0, 1));
+  ASSERT_EQ(intersectSphereRoots(centre, 1, fromCentre).size(), 1);
+  EXPECT_EQ(intersectSphereRoots(centre, 1, fromCentre)[0], 1.0);
+}
+
 }  // namespace
 }  // namespace rt

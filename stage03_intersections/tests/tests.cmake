@@ -8,4 +8,5 @@ set(STAGE_TESTS
     tests/TubeIntersectionTests.cpp
     tests/CylinderIntersectionTests.cpp
     tests/GeometriesTests.cpp
+    tests/HitRulesTests.cpp
     tests/PropertyTests.cpp)

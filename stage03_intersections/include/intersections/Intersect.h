@@ -43,6 +43,11 @@ inline bool withinDistance(double t, double tMax) noexcept {
   return t <= tMax || alignZero(t - tMax) <= 0;
 }
 
+/// The sphere's solver on its bare data, the centre's coordinates and the radius. It is what
+/// intersectRoots(Sphere) runs; a structure that keeps spheres in a compact array of its own
+/// (the BVH of mini project 2) calls it too, so both find the same roots, bit for bit.
+Roots intersectSphereRoots(const Double3& centre, double radius, const Ray& ray) noexcept;
+
 Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept;
 Roots intersectRoots(const Plane& p, const Ray& ray) noexcept;
 Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept;

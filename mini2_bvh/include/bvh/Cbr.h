@@ -1,0 +1,47 @@
+#pragma once
+/// @file Cbr.h
+/// The course's CBR ("conservative boundary region"): the shapes are still scanned one after
+/// another, but each bounded shape's box is tested first, and the shape itself only when the ray
+/// meets the box before the best hit so far. Unbounded shapes (planes, tubes) have no box and
+/// are always tested. A step between the linear Geometries and the BVH: it saves the expensive
+/// exact tests, not the scan.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "bvh/FloatBox.h"
+#include "geometries/Geometry.h"
+#include "intersections/Geometries.h"
+#include "intersections/Intersectable.h"
+
+namespace rt {
+
+class Cbr final : public Intersectable {
+ public:
+  /// @param shapes viewed, not copied (as by a std::span): they must outlive the Cbr and stay
+  ///        unchanged. Hit indices are indices into shapes.
+  explicit Cbr(std::span<const Geometry> shapes);
+  explicit Cbr(const Geometries& geometries) : Cbr(geometries.shapes()) {}
+  Cbr(Geometries&&) = delete;  // would view a temporary
+
+  /// The same answer as Geometries::closestHit over the same shapes, bit for bit. Counts each
+  /// box it tests as a visited node (a CBR is a hierarchy one level deep) and each exact test.
+  std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE,
+                                QueryCounts* counts = nullptr) const noexcept override;
+  /// The same hits as Geometries::forEachHit over the same shapes.
+  bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
+                  QueryCounts* counts = nullptr) const override;
+
+ private:
+  struct BoxedShape {
+    FloatBox box;
+    std::uint32_t geometry;
+  };
+
+  std::span<const Geometry> shapes_;
+  std::vector<std::uint32_t> unbounded_;  ///< planes and tubes, by index
+  std::vector<BoxedShape> bounded_;       ///< the others with their boxes, by index
+};
+
+}  // namespace rt

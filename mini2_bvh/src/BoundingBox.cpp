@@ -1,0 +1,46 @@
+#include "bvh/BoundingBox.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace rt {
+
+namespace {
+Aabb boxOfPoints(std::span<const Point> points) noexcept {
+  Aabb box;
+  for (const Point& p : points) box.expand(p.xyz());
+  return box;
+}
+}  // namespace
+
+Aabb boundingBox(const Sphere& s) noexcept {
+  const Double3 r(s.radius());
+  return Aabb(s.center().xyz() - r, s.center().xyz() + r);
+}
+
+Aabb boundingBox(const Triangle& t) noexcept { return boxOfPoints(t.vertices()); }
+
+Aabb boundingBox(const Polygon& p) noexcept { return boxOfPoints(p.vertices()); }
+
+Aabb boundingBox(const Cylinder& c) noexcept {
+  const Double3& a = c.axis().direction().xyz();
+  const Double3& bottom = c.axis().head().xyz();
+  const Double3 top = bottom + a * c.height();
+  // max(0, ·): a unit axis may exceed 1 in a component by rounding.
+  const auto halfWidth = [&c](double ai) {
+    return c.radius() * std::sqrt(std::max(0.0, 1 - ai * ai));
+  };
+  const Double3 e(halfWidth(a.x), halfWidth(a.y), halfWidth(a.z));
+  return Aabb(bottom - e, bottom + e).expand(Aabb(top - e, top + e));
+}
+
+std::optional<Aabb> boundingBox(const Plane&) noexcept { return std::nullopt; }
+
+std::optional<Aabb> boundingBox(const Tube&) noexcept { return std::nullopt; }
+
+std::optional<Aabb> boundingBox(const Geometry& g) noexcept {
+  return std::visit([](const auto& shape) -> std::optional<Aabb> { return boundingBox(shape); }, g);
+}
+
+}  // namespace rt

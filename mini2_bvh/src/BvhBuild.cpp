@@ -1,0 +1,349 @@
+// Building the BVH: binned surface-area heuristic, nodes written depth-first into one array.
+//
+// Each primitive enters the build as a 32-byte record (its conservative float box, its index in
+// the scene and whether it is a sphere). A node's range of records is split in place
+// (std::partition), so the build allocates nothing but the records, the node array and the leaves'
+// index arrays.
+//
+// The surface-area heuristic (Goldsmith and Salmon 1987, MacDonald and Booth 1990): a ray that
+// meets a node's box B meets a child's box B' inside it with probability SA(B')/SA(B), so
+//
+//     cost(split) = C_trav + (SA(L)·n_L + SA(R)·n_R) / SA(B)      (in units of one shape test)
+//     cost(leaf)  = n
+//
+// and a node is split where cost(split) is lowest, if it is below cost(leaf). The candidate
+// splits are the borders of BINS equal bins over the centroids' extent on each axis (Wald 2007):
+// one pass puts every centroid in its bin, a sweep from each end accumulates the counts and
+// boxes, and the cheapest border over the three axes wins. The children's bounds come out of the
+// bins and of the partition, without another pass over the records.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <variant>
+
+#include "bvh/BoundingBox.h"
+#include "bvh/Bvh.h"
+
+namespace rt {
+
+namespace {
+
+struct BuildRecord {
+  FloatBox box;
+  std::uint32_t shape;
+  bool sphere;  ///< kept here so that making a leaf never reads the (large) shapes again
+};
+static_assert(sizeof(BuildRecord) == 32, "a build record is 32 bytes");
+
+/// A record's centroid on an axis: 0.5·lo + 0.5·hi (halved first, so no sum overflows). Every
+/// record's box is finite (see the constructor), so every centroid is.
+float centroid(const BuildRecord& r, int axis) noexcept {
+  return 0.5f * r.box.lo[axis] + 0.5f * r.box.hi[axis];
+}
+
+bool isFinite(const FloatBox& b) noexcept {
+  return std::isfinite(b.lo[0]) && std::isfinite(b.lo[1]) && std::isfinite(b.lo[2]) &&
+         std::isfinite(b.hi[0]) && std::isfinite(b.hi[1]) && std::isfinite(b.hi[2]);
+}
+
+/// What the build knows of a set of records: the box around their boxes and the box around
+/// their centroids. Both are unions of floats, so exact.
+struct Bounds {
+  FloatBox box = FloatBox::empty();
+  FloatBox centroids = FloatBox::empty();
+
+  void add(const BuildRecord& r) noexcept {
+    add(r, {centroid(r, 0), centroid(r, 1), centroid(r, 2)});
+  }
+  void add(const BuildRecord& r, const std::array<float, 3>& c) noexcept {
+    box.expand(r.box);
+    centroids.expand(FloatBox{c, c});
+  }
+  void add(const Bounds& b) noexcept {
+    box.expand(b.box);
+    centroids.expand(b.centroids);
+  }
+};
+
+/// The bins along one axis: bin b holds the centroids c with b = floor((c − lo)·scale), scale =
+/// bins / extent, the last bin also holding c = hi. (c − lo may overflow to +∞ for coordinates
+/// near the float range's end; the minimum with the last bin is taken before the conversion.)
+struct Binning {
+  float lo = 0;
+  float scale = 0;  ///< 0: the centroids do not spread along this axis
+  float last = 0;   ///< the number of bins − 1
+
+  int bin(float c) const noexcept { return static_cast<int>(std::min((c - lo) * scale, last)); }
+};
+
+struct Bin {
+  FloatBox box;
+  std::uint32_t count;
+};
+
+/// Where to split a range, or that it becomes a leaf; with the bounds of both sides.
+struct Split {
+  bool leaf = true;
+  int axis = 0;
+  std::uint32_t mid = 0;
+  Bounds left, right;
+};
+
+class Builder {
+ public:
+  Builder(std::vector<BuildRecord>& records, std::vector<BvhNode>& nodes,
+          std::vector<std::uint32_t>& sphereShapes, std::vector<std::uint32_t>& otherShapes,
+          int sahMaxDepth)
+      : sahMaxDepth_(std::clamp(sahMaxDepth, 0, Bvh::SAH_MAX_DEPTH)),
+        records_(records),
+        nodes_(nodes),
+        sphereShapes_(sphereShapes),
+        otherShapes_(otherShapes) {}
+
+  /// Builds the tree over every record; returns the deepest leaf's depth.
+  int build() {
+    const auto n = static_cast<std::uint32_t>(records_.size());
+    buildNode(0, n, 0, boundsOf(0, n));
+    return maxDepth_;
+  }
+
+ private:
+  /// Writes the node of records [begin, end) at the end of the array, then its subtree right
+  /// after it (depth-first); returns its index.
+  std::uint32_t buildNode(std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds) {
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    const Split split = chooseSplit(begin, end, bounds, depth);
+    if (split.leaf) {
+      makeLeaf(index, bounds.box, begin, end, depth);
+      return index;
+    }
+    buildNode(begin, split.mid, depth + 1, split.left);  // the first child: index + 1
+    const std::uint32_t second = buildNode(split.mid, end, depth + 1, split.right);
+    nodes_[index] = interior(bounds.box, second, split.axis);
+    return index;
+  }
+
+  Split chooseSplit(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, int depth) {
+    const std::uint32_t n = end - begin;
+    // A split costs at least C_trav·SA(box), a leaf n·SA(box): n <= C_trav never splits.
+    if (n <= Bvh::TRAVERSAL_COST && n <= Bvh::MAX_LEAF_SIZE) return Split{};
+    // A few centroids need no more bins than they are.
+    const int bins = static_cast<int>(std::min<std::uint32_t>(Bvh::BINS, n));
+    std::array<Binning, 3> binnings;
+    bool spread = false;
+    for (int a = 0; a < 3; ++a) {
+      const float lo = bounds.centroids.lo[a];
+      const float scale = static_cast<float>(bins / (double{bounds.centroids.hi[a]} - lo));
+      if (std::isfinite(scale)) {  // not for a zero (or denormal) extent
+        binnings[a] = Binning{lo, scale, static_cast<float>(bins - 1)};
+        spread = true;
+      }
+    }
+    if (!spread) {
+      // Every centroid is the same point: no border separates them. A few make a leaf; more are
+      // cut in two halves of the range (their boxes may still differ, and a leaf's count is
+      // bounded).
+      if (n <= Bvh::MAX_LEAF_SIZE) return Split{};
+      return splitAt(begin, end, begin + n / 2, bounds.box.widen().longestAxis());
+    }
+    if (depth >= sahMaxDepth_) {
+      if (n <= Bvh::MAX_LEAF_SIZE) return Split{};
+      return medianSplit(begin, end, bounds.centroids.widen().longestAxis());
+    }
+    return sahSplit(begin, end, bounds, binnings, bins);
+  }
+
+  /// The binned SAH with `used` bins over the axes along which the centroids spread.
+  Split sahSplit(std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
+                 const std::array<Binning, 3>& binnings, int used) {
+    std::array<std::array<Bin, Bvh::BINS>, 3> bins;
+    for (auto& axis : bins)
+      for (int b = 0; b < used; ++b) axis[b] = Bin{FloatBox::empty(), 0};
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const BuildRecord& r = records_[i];
+      const std::array<float, 3> c{centroid(r, 0), centroid(r, 1), centroid(r, 2)};
+      for (int a = 0; a < 3; ++a) {  // (an axis of scale 0 puts all in bin 0, unused)
+        Bin& bin = bins[a][binnings[a].bin(c[a])];
+        ++bin.count;
+        bin.box.expand(r.box);
+      }
+    }
+    // The cheapest border. Costs are unnormalised (times SA(box)), so that a flat or huge box
+    // never divides 0 or ∞. The border after an empty bin splits as the one before it: skipped.
+    double bestCost = INFINITE_DISTANCE;
+    int bestAxis = -1, bestBorder = 0;  // border b: bins 0..b on the left
+    for (int a = 0; a < 3; ++a) {
+      if (binnings[a].scale == 0) continue;
+      std::array<double, Bvh::BINS> rightCost{};  // rightCost[b]: SA·count of bins b..last
+      FloatBox right = FloatBox::empty();
+      std::uint32_t rightCount = 0;
+      for (int b = used - 1; b > 0; --b) {
+        rightCount += bins[a][b].count;
+        right.expand(bins[a][b].box);
+        if (bins[a][b - 1].count > 0) rightCost[b] = rightCount * right.widen().surfaceArea();
+      }
+      FloatBox left = FloatBox::empty();
+      std::uint32_t leftCount = 0;
+      for (int b = 0; b < used - 1; ++b) {
+        leftCount += bins[a][b].count;
+        left.expand(bins[a][b].box);
+        if (bins[a][b].count == 0) continue;  // border b splits as border b - 1 does
+        // Both sides are non-empty: bin 0 holds the lowest centroid, the last bin the highest.
+        const double cost = leftCount * left.widen().surfaceArea() + rightCost[b + 1];
+        if (bestAxis < 0 || cost < bestCost) {
+          bestCost = cost;
+          bestAxis = a;
+          bestBorder = b;
+        }
+      }
+    }
+    const std::uint32_t n = end - begin;
+    const double area = bounds.box.widen().surfaceArea();
+    const bool splitPays = Bvh::TRAVERSAL_COST * area + bestCost < n * area;
+    if (!splitPays && n <= Bvh::MAX_LEAF_SIZE) return Split{};
+    // The children's boxes are the unions of their bins' boxes; their centroids' boxes are
+    // gathered while the records are partitioned.
+    Split split{false, bestAxis, 0, {}, {}};
+    for (int b = 0; b < used; ++b)
+      (b <= bestBorder ? split.left : split.right).box.expand(bins[bestAxis][b].box);
+    const Binning& binning = binnings[bestAxis];
+    split.mid = partition(begin, end, split, bestAxis,
+                          [&](float c) { return binning.bin(c) <= bestBorder; });
+    // Both sides hold a record (see above); the median is only a guard against the impossible.
+    if (split.mid == begin || split.mid == end) return medianSplit(begin, end, bestAxis);
+    return split;
+  }
+
+  /// Moves the records of [begin, end) whose centroid c on axis has isLeft(c) to the front,
+  /// adding their centroids to split.left's box and the others' to split.right's; returns where
+  /// the right side begins. Lomuto's scheme, written without a branch on isLeft (on a random
+  /// scene it is a coin toss, which a branch predictor cannot learn): every record is swapped
+  /// with the first right one, and the border moves on when the record was a left one.
+  template <typename IsLeft>
+  std::uint32_t partition(std::uint32_t begin, std::uint32_t end, Split& split, int axis,
+                          const IsLeft& isLeft) {
+    std::uint32_t border = begin;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const BuildRecord& r = records_[i];
+      const std::array<float, 3> c{centroid(r, 0), centroid(r, 1), centroid(r, 2)};
+      const bool left = isLeft(c[axis]);
+      (left ? split.left : split.right).centroids.expand(FloatBox{c, c});
+      std::swap(records_[i], records_[border]);
+      border += left ? 1 : 0;
+    }
+    return border;
+  }
+
+  /// Half the records on each side of the median centroid along axis: the depth then grows by
+  /// one per halving, at most 32 levels for 2^32 records.
+  Split medianSplit(std::uint32_t begin, std::uint32_t end, int axis) {
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(records_.begin() + begin, records_.begin() + mid, records_.begin() + end,
+                     [axis](const BuildRecord& a, const BuildRecord& b) {
+                       return centroid(a, axis) < centroid(b, axis);
+                     });
+    return splitAt(begin, end, mid, axis);
+  }
+
+  Split splitAt(std::uint32_t begin, std::uint32_t end, std::uint32_t mid, int axis) const {
+    return Split{false, axis, mid, boundsOf(begin, mid), boundsOf(mid, end)};
+  }
+
+  Bounds boundsOf(std::uint32_t begin, std::uint32_t end) const {
+    Bounds bounds;
+    for (std::uint32_t i = begin; i < end; ++i) bounds.add(records_[i]);
+    return bounds;
+  }
+
+  /// Makes node `index` a leaf of records [begin, end). A leaf holds one kind of primitive, so
+  /// that a sphere leaf runs the sphere solver on compact data without asking each primitive
+  /// its kind; a range with both kinds becomes an interior node over a leaf of each.
+  void makeLeaf(std::uint32_t index, const FloatBox& box, std::uint32_t begin, std::uint32_t end,
+                int depth) {
+    const auto spheresEnd =
+        static_cast<std::uint32_t>(std::partition(records_.begin() + begin, records_.begin() + end,
+                                                  [](const BuildRecord& r) { return r.sphere; }) -
+                                   records_.begin());
+    if (spheresEnd == begin || spheresEnd == end) {
+      nodes_[index] = leaf(box, begin, end, spheresEnd == end);
+      maxDepth_ = std::max(maxDepth_, depth);
+      return;
+    }
+    const auto first = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.push_back(leaf(boundsOf(begin, spheresEnd).box, begin, spheresEnd, true));
+    nodes_.push_back(leaf(boundsOf(spheresEnd, end).box, spheresEnd, end, false));
+    nodes_[index] = interior(box, first + 1, box.widen().longestAxis());
+    maxDepth_ = std::max(maxDepth_, depth + 1);
+  }
+
+  /// A leaf node; its shapes are appended to the array of its kind.
+  BvhNode leaf(const FloatBox& box, std::uint32_t begin, std::uint32_t end, bool spheres) {
+    std::vector<std::uint32_t>& primitives = spheres ? sphereShapes_ : otherShapes_;
+    BvhNode node;
+    node.box = box;
+    node.offset = static_cast<std::uint32_t>(primitives.size());
+    node.count = static_cast<std::uint16_t>(end - begin);
+    node.kind = spheres ? BvhNode::Kind::Spheres : BvhNode::Kind::Shapes;
+    for (std::uint32_t i = begin; i < end; ++i) primitives.push_back(records_[i].shape);
+    return node;
+  }
+
+  static BvhNode interior(const FloatBox& box, std::uint32_t second, int axis) {
+    BvhNode node;
+    node.box = box;
+    node.offset = second;
+    node.axis = static_cast<std::uint8_t>(axis);
+    node.kind = BvhNode::Kind::Interior;
+    return node;
+  }
+
+  int sahMaxDepth_;
+  std::vector<BuildRecord>& records_;
+  std::vector<BvhNode>& nodes_;
+  std::vector<std::uint32_t>& sphereShapes_;
+  std::vector<std::uint32_t>& otherShapes_;
+  int maxDepth_ = 0;
+};
+
+}  // namespace
+
+Bvh::Bvh(std::span<const Geometry> shapes, BvhBuildOptions options) : shapes_(shapes) {
+  std::vector<BuildRecord> records;
+  records.reserve(shapes.size());
+  std::size_t sphereCount = 0;
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+    // A shape without a box, or whose box does not fit in floats (coordinates beyond ±3.4e38),
+    // is tested on its own, like a plane.
+    const std::optional<Aabb> box = boundingBox(shapes[i]);
+    const FloatBox stored = box ? conservativeBox(*box) : FloatBox::empty();
+    if (!box || !isFinite(stored)) {
+      unbounded_.push_back(i);
+      continue;
+    }
+    const bool sphere = std::holds_alternative<Sphere>(shapes[i]);
+    records.push_back(BuildRecord{stored, i, sphere});
+    sphereCount += sphere ? 1 : 0;
+  }
+  if (records.empty()) return;
+
+  // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The reservation
+  // is address space: only the nodes written take memory, and shrink_to_fit returns the rest.
+  nodes_.reserve(2 * records.size() - 1);
+  sphereShapes_.reserve(sphereCount);
+  otherShapes_.reserve(records.size() - sphereCount);
+  depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth).build();
+
+  // The records are done with before the compact spheres are made: the two never coexist.
+  std::vector<BuildRecord>().swap(records);
+  nodes_.shrink_to_fit();
+  spheres_.reserve(sphereShapes_.size());
+  for (std::uint32_t i : sphereShapes_) {
+    const Sphere& s = std::get<Sphere>(shapes[i]);
+    spheres_.push_back(CompactSphere{s.center().xyz(), s.radius()});
+  }
+}
+
+}  // namespace rt

@@ -1,0 +1,61 @@
+#include "bvh/Cbr.h"
+
+#include <algorithm>
+
+#include "bvh/BoundingBox.h"
+#include "bvh/SlabRay.h"
+#include "intersections/HitRules.h"
+
+namespace rt {
+
+Cbr::Cbr(std::span<const Geometry> shapes) : shapes_(shapes) {
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+    if (const std::optional<Aabb> box = boundingBox(shapes[i]))
+      bounded_.push_back(BoxedShape{conservativeBox(*box), i});
+    else
+      unbounded_.push_back(i);
+  }
+}
+
+std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
+                                   QueryCounts* counts) const noexcept {
+  NearestHit nearest(tMax);
+  for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
+  std::uint64_t tests = unbounded_.size();
+  const SlabRay slab(ray);
+  const double limit = slabLimit(tMax);
+  for (const BoxedShape& s : bounded_) {
+    // A box entered strictly after the best hit cannot hold a better one; at exactly the best t
+    // it can (a smaller index), so that box is still opened.
+    double entry;
+    if (!slabHit(slab, s.box, std::min(limit, nearest.t()), entry)) continue;
+    nearest.offer(intersectRoots(shapes_[s.geometry], ray), s.geometry);
+    ++tests;
+  }
+  if (counts != nullptr) *counts += QueryCounts{tests, bounded_.size()};
+  return nearest.hit();
+}
+
+bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
+  std::uint64_t tests = 0;
+  bool complete = true;
+  for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
+    ++tests;
+    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
+  }
+  const SlabRay slab(ray);
+  const double limit = slabLimit(tMax);
+  std::uint64_t boxes = 0;
+  for (std::size_t k = 0; complete && k < bounded_.size(); ++k) {
+    const BoxedShape& s = bounded_[k];
+    ++boxes;
+    double entry;
+    if (!slabHit(slab, s.box, limit, entry)) continue;
+    ++tests;
+    complete = visitHits(intersectRoots(shapes_[s.geometry], ray), s.geometry, tMax, visit);
+  }
+  if (counts != nullptr) *counts += QueryCounts{tests, boxes};
+  return complete;
+}
+
+}  // namespace rt
