@@ -6,7 +6,9 @@
 namespace rt {
 
 LitScene::LitScene(const Scene& base)
-    : Scene(base), appearances(1), appearanceIndex(base.geometries.size(), 0) {}
+    : Scene(base),
+      appearances(base.geometries.empty() ? 0 : 1),
+      appearanceIndex(base.geometries.size(), 0) {}
 
 std::uint32_t LitScene::addAppearance(const Color& emission, const Material& material) {
   material.validate();

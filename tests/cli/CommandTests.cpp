@@ -19,6 +19,7 @@
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
 #include "reflections/CourseScenes.h"
+#include "scenefile/LitDocument.h"
 #include "scenefile/SceneFile.h"
 #include "shadows/CourseScenes.h"
 
@@ -55,8 +56,9 @@ std::vector<std::string> lines(const std::string& text) {
 
 TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   // TC01: the scene count is stage 4's one scene plus every entry of the stages' tables
+  // (and mini project 1's galaxy)
   const std::size_t expected =
-      1 + lightingScenes().size() + shadowScenes().size() + reflectionScenes().size();
+      1 + lightingScenes().size() + shadowScenes().size() + reflectionScenes().size() + 1;
   EXPECT_EQ(builtinScenes().size(), expected);
   // TC02: every table entry is there under its own name, with its stage's tracer
   const auto expectEntries = [](std::span<const CourseScene> table, const char* tracer) {
@@ -65,7 +67,7 @@ TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
       ASSERT_NE(s, nullptr) << entry.name;
       EXPECT_EQ(s->description, entry.description);
       EXPECT_EQ(s->tracer, tracer) << entry.name;
-      EXPECT_EQ(s->make().render.tracer, tracer) << entry.name;
+      EXPECT_EQ(makeBuiltinScene(*s, {}).render.tracer, tracer) << entry.name;
     }
   };
   expectEntries(lightingScenes(), "phong");
@@ -73,7 +75,7 @@ TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   expectEntries(reflectionScenes(), "whitted");
   // TC03: stage 4's scene is rendered by the ambient tracer
   ASSERT_NE(findBuiltinScene("two-color"), nullptr);
-  EXPECT_EQ(findBuiltinScene("two-color")->make().render.tracer, "ambient");
+  EXPECT_EQ(makeBuiltinScene(*findBuiltinScene("two-color"), {}).render.tracer, "ambient");
   // TC04: names are unique, non-empty, without spaces; every description is non-empty
   std::set<std::string> names;
   for (const BuiltinScene& s : builtinScenes()) {
@@ -90,23 +92,23 @@ TEST(BuiltinScenesTests, twoColorDocumentIsTheCourseScene) {
   // TC01: the document carries stage 4's scene and camera unchanged, as a LitScene whose every
   // shape has the default appearance (one shared row)
   const SceneSetup<Scene> course = twoColorScene();
-  const SceneDocument doc = findBuiltinScene("two-color")->make();
-  EXPECT_EQ(doc.scene.geometries.size(), course.scene.geometries.size());
-  EXPECT_EQ(doc.scene.appearances.size(), 1u);
-  EXPECT_EQ(doc.scene.appearanceIndex, std::vector<std::uint32_t>(4, 0));
-  EXPECT_EQ(doc.scene.background, course.scene.background);
-  EXPECT_EQ(doc.scene.ambientLight.intensity(), course.scene.ambientLight.intensity());
+  const SceneDocument doc = makeBuiltinScene(*findBuiltinScene("two-color"), {});
+  EXPECT_EQ(litScene(doc).geometries.size(), course.scene.geometries.size());
+  EXPECT_EQ(litScene(doc).appearances.size(), 1u);
+  EXPECT_EQ(litScene(doc).appearanceIndex, std::vector<std::uint32_t>(4, 0));
+  EXPECT_EQ(litScene(doc).background, course.scene.background);
+  EXPECT_EQ(litScene(doc).ambientLight.intensity(), course.scene.ambientLight.intensity());
   EXPECT_EQ(doc.camera.nX, course.camera.nX);
   EXPECT_EQ(doc.camera.nY, course.camera.nY);
   EXPECT_TRUE(doc.geometryNames.empty());
-  EXPECT_TRUE(doc.appearanceMaterialNames.empty());
+  EXPECT_EQ(nullptr, doc.findPart<NamedMaterials>());
 }
 
 TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {
   // TC01: --tracer and a scene file's render.tracer accept the same names, in the same order
   std::vector<std::string_view> ours;
   for (const TracerKind& t : tracerKinds()) ours.push_back(t.name);
-  const std::span<const std::string_view> format = knownTracers();
+  const std::vector<std::string_view> format = knownTracers();
   EXPECT_EQ(ours, std::vector<std::string_view>(format.begin(), format.end()));
 }
 
@@ -118,14 +120,26 @@ TEST(CommandTests, listPrintsOneLinePerSceneNameFirst) {
   // TC01: exit 0, nothing on stderr
   EXPECT_EQ(r.code, 0);
   EXPECT_EQ(r.err, "");
-  // TC02: one line per built-in scene, in order: the name, two or more spaces, the description
+  // TC02: one line per built-in scene, in order: the name, two or more spaces, the description;
+  // a scene with parameters has a second line, indented, listing them with their defaults
   const std::vector<std::string> got = lines(r.out);
-  ASSERT_EQ(got.size(), builtinScenes().size());
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    const BuiltinScene& s = builtinScenes()[i];
-    ASSERT_TRUE(got[i].starts_with(s.name + "  ")) << got[i];
-    EXPECT_EQ(got[i].substr(got[i].find_first_not_of(' ', s.name.size())), s.description);
+  std::size_t line = 0;
+  for (const BuiltinScene& s : builtinScenes()) {
+    ASSERT_LT(line, got.size());
+    ASSERT_TRUE(got[line].starts_with(s.name + "  ")) << got[line];
+    EXPECT_EQ(got[line].substr(got[line].find_first_not_of(' ', s.name.size())), s.description);
+    ++line;
+    if (!s.params.empty()) {
+      ASSERT_LT(line, got.size());
+      std::string expected = "parameters (--param NAME=VALUE):";
+      for (const SceneParam& p : s.params) expected += " " + p.name + "=" + p.defaultValue;
+      EXPECT_EQ(got[line].substr(got[line].find_first_not_of(' ')), expected);
+      ++line;
+    }
   }
+  EXPECT_EQ(line, got.size());
+  // TC03: the galaxy lists its five parameters
+  EXPECT_NE(r.out.find("arms=21 perArm=50 stars=0 diffusion=on layout=1"), std::string::npos);
   // TC11: extra arguments are refused
   const Outcome extra = run({"list", "more"});
   EXPECT_EQ(extra.code, 2);
@@ -196,7 +210,7 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC06",
        {"render", "two-color", "--tracer", "phog"},
        "rt: --tracer: unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong shadow "
-       "whitted)\n"},
+       "whitted beams)\n"},
       // TC07: an output that is not a PNG
       {"TC07",
        {"render", "two-color", "-o", "x.jpg"},
@@ -298,24 +312,29 @@ TEST(CommandTests, renderStoppedBeforeItsFirstRowWritesNothing) {
 // ---------------------------------------------------------------------------------------------
 // probe's JSON
 
+/// probe's JSON for ray, with the tracer's colour for it (what `rt probe --ray` prints).
+std::string probeJsonOf(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer) {
+  return probeJson(doc, ray, tracer.traceRay(ray));
+}
+
 /// A sphere of radius 2 centred on the ray (-1,0.5,-2) + t(0,0,1) at z = 5, and a plane z = 9
 /// facing the ray's origin: every value of the answer is exact in binary.
 SceneDocument probeScene() {
-  SceneDocument doc;
-  doc.scene.ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
-  doc.scene.add(Sphere(Point(-1, 0.5, 5), 2), Color(300, 20, 20));
-  doc.scene.add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
+  SceneDocument doc = litDocument(LitScene{}, CameraSpec{});
+  litScene(doc).ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
+  litScene(doc).add(Sphere(Point(-1, 0.5, 5), 2), Color(300, 20, 20));
+  litScene(doc).add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
   doc.geometryNames = {{0, "ball \"A\""}};
   return doc;
 }
 
 TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
   const SceneDocument doc = probeScene();
-  const PhongTracer tracer(doc.scene);
+  const PhongTracer tracer(litScene(doc));
   // TC01: a ray that crosses the sphere through its centre, then the plane: three hits in order
   // of t, outward normals, names (null when none, escaped), and the colour = emission + Ia·kA =
   // (300+50, 20+50, 20+50), not clamped to 255
-  EXPECT_EQ(probeJson(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
             "{\n"
             "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
             "  \"hits\": [\n"
@@ -329,7 +348,7 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "  \"color\": [350, 70, 70]\n"
             "}\n");
   // TC02: a ray that misses everything: no hits, the background
-  EXPECT_EQ(probeJson(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, -1)), tracer),
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, -1)), tracer),
             "{\n"
             "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, -1]},\n"
             "  \"hits\": [],\n"
@@ -339,7 +358,7 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
   // file's long objects are; control characters in a name are escaped
   SceneDocument named = doc;
   named.geometryNames[0] = std::string(60, 'n') + "\t\x01";
-  EXPECT_EQ(probeJson(named, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+  EXPECT_EQ(probeJsonOf(named, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
             "{\n"
             "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
             "  \"hits\": [\n"
@@ -367,7 +386,7 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
                 "  \"color\": [350, 70, 70]\n"
                 "}\n");
   // TC04: numbers in their shortest round-trip form: the direction (1, 1, 0) normalised
-  EXPECT_EQ(probeJson(doc, Ray(Point(0, 0, -20), Vector(1, 1, 0)), tracer),
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(0, 0, -20), Vector(1, 1, 0)), tracer),
             "{\n"
             "  \"ray\": {\"origin\": [0, 0, -20], \"direction\": [0.7071067811865475, "
             "0.7071067811865475, 0]},\n"
@@ -387,7 +406,7 @@ TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
     const fs::path file = dir / (s.name + ".json");
     ASSERT_TRUE(fs::exists(file)) << file
                                   << " is missing; run: cmake --build BUILD --target export-scenes";
-    EXPECT_EQ(test::readFile(file.string()), dumpScene(s.make()))
+    EXPECT_EQ(test::readFile(file.string()), dumpScene(makeBuiltinScene(s, {})))
         << file << " is out of date; run: cmake --build BUILD --target export-scenes";
   }
   // TC02: scenes/ holds no scene file that is not a built-in scene

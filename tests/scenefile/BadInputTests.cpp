@@ -119,9 +119,10 @@ const BadInput BAD_INPUTS[] = {
      "{\n"
      "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
-     "  \"render\": {\"threads\": 4}\n"
+     "  \"render\": {\"fps\": 4}\n"
      "}\n",
-     "bad.json:4:14: render.threads: unknown key; expected one of: tracer, maxLevel, minK"},
+     "bad.json:4:14: render.fps: unknown key; expected one of: tracer, maxLevel, minK, seed, "
+     "samples, adaptive, adaptiveThreshold, adaptiveDepth, beamDepth, accel, threads"},
     // EP15: unknown key differing only in case
     {"UnknownKeyCase",
      "{\n"
@@ -291,7 +292,7 @@ const BadInput BAD_INPUTS[] = {
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
      "  \"render\": {\"tracer\": \"witted\"}\n"
      "}\n",
-     "bad.json:4:24: render.tracer: expected a tracer (ambient, phong, shadow, whitted), got "
+     "bad.json:4:24: render.tracer: expected a tracer (ambient, phong, shadow, whitted, beams), got "
      "\"witted\"; did you mean 'whitted'?"},
     // EP32: resolution beyond 2^15 per side
     {"AbsurdResolution",
@@ -431,8 +432,8 @@ const BadInput BAD_INPUTS[] = {
      "{\"name\": \"h\xc3\xa9"
      "llo \xe2\x98\xba"
      "\", \"x\": 1}",
-     "bad.json:1:21: x: unknown key; expected one of: name, camera, background, ambient, lights, "
-     "materials, geometries, render"},
+     "bad.json:1:21: x: unknown key; expected one of: name, camera, views, background, ambient, "
+     "lights, materials, geometries, render"},
 };
 
 // gtest prints a case by its name.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "SceneCompare.h"
+#include "scenefile/LitDocument.h"
 #include "scenefile/SceneFile.h"
 
 namespace rt {
@@ -33,13 +34,13 @@ TEST(DefaultsTest, Document) {
   // EP01: only a camera: no name, black background, no ambient light, nothing in the scene,
   // the model's render settings.
   const SceneDocument doc = parse("");
-  EXPECT_EQ(doc.scene.name, "");
-  EXPECT_TRUE(same(doc.scene.background.rgb(), Color::BLACK.rgb()));
-  EXPECT_TRUE(same(doc.scene.ambientLight.ia().rgb(), AmbientLight::NONE.ia().rgb()));
-  EXPECT_TRUE(same(doc.scene.ambientLight.kA(), AmbientLight::NONE.kA()));
-  EXPECT_TRUE(doc.scene.lights.empty());
-  EXPECT_TRUE(doc.scene.geometries.empty());
-  EXPECT_TRUE(doc.materials.empty());
+  EXPECT_EQ(litScene(doc).name, "");
+  EXPECT_TRUE(same(litScene(doc).background.rgb(), Color::BLACK.rgb()));
+  EXPECT_TRUE(same(litScene(doc).ambientLight.ia().rgb(), AmbientLight::NONE.ia().rgb()));
+  EXPECT_TRUE(same(litScene(doc).ambientLight.kA(), AmbientLight::NONE.kA()));
+  EXPECT_TRUE(litScene(doc).lights.empty());
+  EXPECT_TRUE(litScene(doc).geometries.empty());
+  EXPECT_TRUE(namedMaterials(doc).materials.empty());
   const RenderSettings model;
   EXPECT_EQ(doc.render.tracer, model.tracer);
   EXPECT_EQ(doc.render.maxLevel, model.maxLevel);
@@ -71,13 +72,13 @@ TEST(DefaultsTest, AmbientAndMaterial) {
   // EP01: an empty ambient object is no ambient light; an empty material is the model's
   // Material.
   const SceneDocument doc = parse("\"ambient\": {}, \"materials\": {\"plain\": {}}");
-  EXPECT_TRUE(same(doc.scene.ambientLight.kA(), Double3(1)));
-  EXPECT_TRUE(same(doc.materials.at("plain"), Material{}));
+  EXPECT_TRUE(same(litScene(doc).ambientLight.kA(), Double3(1)));
+  EXPECT_TRUE(same(namedMaterials(doc).materials.at("plain"), Material{}));
   // EP02: a single number is the same coefficient for r, g and b.
   const SceneDocument kA = parse("\"ambient\": {\"color\": [255, 255, 255], \"kA\": 0.25}");
-  EXPECT_TRUE(same(kA.scene.ambientLight.kA(), Double3(0.25)));
+  EXPECT_TRUE(same(litScene(kA).ambientLight.kA(), Double3(0.25)));
   // EP03: an integral number is accepted where an integer is expected (shininess 1e2).
-  EXPECT_EQ(parse("\"materials\": {\"m\": {\"shininess\": 1e2}}").materials.at("m").shininess, 100);
+  EXPECT_EQ(namedMaterials(parse("\"materials\": {\"m\": {\"shininess\": 1e2}}")).materials.at("m").shininess, 100);
 }
 
 TEST(DefaultsTest, Geometry) {
@@ -85,11 +86,11 @@ TEST(DefaultsTest, Geometry) {
   // and no named material.
   const SceneDocument doc =
       parse("\"geometries\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1}]");
-  ASSERT_EQ(doc.scene.geometries.size(), 1u);
-  EXPECT_TRUE(same(doc.scene.appearanceOf(0).emission.rgb(), Color::BLACK.rgb()));
-  EXPECT_TRUE(same(doc.scene.appearanceOf(0).material, Material{}));
+  ASSERT_EQ(litScene(doc).geometries.size(), 1u);
+  EXPECT_TRUE(same(litScene(doc).appearanceOf(0).emission.rgb(), Color::BLACK.rgb()));
+  EXPECT_TRUE(same(litScene(doc).appearanceOf(0).material, Material{}));
   EXPECT_TRUE(doc.geometryNames.empty());
-  EXPECT_EQ(doc.materialNameOf(0), nullptr);
+  EXPECT_EQ(materialNameOf(doc, 0), nullptr);
 }
 
 TEST(DefaultsTest, Lights) {
@@ -98,10 +99,10 @@ TEST(DefaultsTest, Lights) {
       "\"lights\": [{\"type\": \"point\", \"intensity\": [1, 2, 3], \"position\": [0, 0, 0]},"
       "{\"type\": \"spot\", \"intensity\": [1, 2, 3], \"position\": [0, 0, 0], "
       "\"direction\": [0, 0, -2]}]");
-  ASSERT_EQ(doc.scene.lights.size(), 2u);
-  const auto& point = std::get<PointLight>(doc.scene.lights[0]);
+  ASSERT_EQ(litScene(doc).lights.size(), 2u);
+  const auto& point = std::get<PointLight>(litScene(doc).lights[0]);
   EXPECT_TRUE(sameBits(point.kC, 1) && sameBits(point.kL, 0) && sameBits(point.kQ, 0));
-  const auto& spot = std::get<SpotLight>(doc.scene.lights[1]);
+  const auto& spot = std::get<SpotLight>(litScene(doc).lights[1]);
   EXPECT_TRUE(sameBits(spot.narrowBeam, 1));
   EXPECT_TRUE(same(spot.direction.xyz(), Double3(0, 0, -1)));  // stored normalised
 }
@@ -112,7 +113,7 @@ TEST(DefaultsTest, TablesAgreeWithTheModel) {
   const SceneDocument doc = parse(
       "\"materials\": {\"m\": {\"kD\": 0, \"kS\": 0, \"shininess\": 0, \"kT\": 0, \"kR\": 0, "
       "\"ior\": 1}}, \"render\": {\"tracer\": \"whitted\", \"maxLevel\": 10, \"minK\": 0.001}");
-  EXPECT_TRUE(same(doc.materials.at("m"), Material{}));
+  EXPECT_TRUE(same(namedMaterials(doc).materials.at("m"), Material{}));
   // EP02: each key is either required, or has a default (JSON text, or "none" for the optional
   // ones whose absence means something of its own).
   for (const SceneKeyInfo& k : sceneFormatKeys()) {

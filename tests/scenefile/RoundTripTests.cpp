@@ -9,6 +9,7 @@
 #include "SceneCompare.h"
 #include "lighting/CourseScenes.h"
 #include "reflections/CourseScenes.h"
+#include "scenefile/LitDocument.h"
 #include "scenefile/SceneFile.h"
 #include "shadows/CourseScenes.h"
 
@@ -22,15 +23,12 @@ std::string examplePath() { return std::string(RT_SCENEFILE_DATA_DIR) + "/exampl
 
 /// A document as a built-in scene makes it: no names, no materials table.
 SceneDocument documentOf(const SceneSetup<LitScene>& setup) {
-  SceneDocument doc;
-  doc.scene = setup.scene;
-  doc.camera = setup.camera;
-  return doc;
+  return litDocument(setup.scene, setup.camera);
 }
 
 /// A small valid document built in code, to which tests add what they exercise.
 SceneDocument baseDocument() {
-  SceneDocument doc;
+  SceneDocument doc = litDocument(LitScene{}, CameraSpec{});
   doc.camera.location = Point(0, 0, 10);
   doc.camera.target = Point(0, 0, 0);
   doc.camera.vpWidth = doc.camera.vpHeight = 2;
@@ -49,11 +47,11 @@ TEST(RoundTripTest, ExampleFile) {
   EXPECT_EQ(Fingerprint(second).str(), Fingerprint(first).str());
   // A few fields compared directly, exactly.
   EXPECT_TRUE(sameBits(second.render.minK, 0.001));
-  EXPECT_TRUE(sameBits(std::get<Sphere>(second.scene.geometries[2]).radius(), 50));
-  EXPECT_TRUE(sameBits(std::get<PointLight>(second.scene.lights[1]).kL, 0.0005));
-  EXPECT_TRUE(sameBits(std::get<SpotLight>(second.scene.lights[2]).kQ, 2e-5));
-  EXPECT_TRUE(sameBits(second.scene.appearanceOf(0).material.kD.y, 0.5));
-  EXPECT_TRUE(sameBits(second.scene.ambientLight.kA().x, 0.15));
+  EXPECT_TRUE(sameBits(std::get<Sphere>(litScene(second).geometries[2]).radius(), 50));
+  EXPECT_TRUE(sameBits(std::get<PointLight>(litScene(second).lights[1]).kL, 0.0005));
+  EXPECT_TRUE(sameBits(std::get<SpotLight>(litScene(second).lights[2]).kQ, 2e-5));
+  EXPECT_TRUE(sameBits(litScene(second).appearanceOf(0).material.kD.y, 0.5));
+  EXPECT_TRUE(sameBits(litScene(second).ambientLight.kA().x, 0.15));
 }
 
 TEST(RoundTripTest, GeometriesThatLookAlikeShareARow) {
@@ -67,8 +65,8 @@ TEST(RoundTripTest, GeometriesThatLookAlikeShareARow) {
             "material": {"kD": 0.2, "kS": 0.33, "shininess": 10}})";
   text += "]}";
   const SceneDocument stars = parseScene(text, "stars.json");
-  EXPECT_EQ(100u, stars.scene.geometries.size());
-  EXPECT_EQ(1u, stars.scene.appearances.size());
+  EXPECT_EQ(100u, litScene(stars).geometries.size());
+  EXPECT_EQ(1u, litScene(stars).appearances.size());
   EXPECT_TRUE(stars.geometryNames.empty());
   // EP02: by name: the same named material and emission share a row, another emission is
   // another row, and each row remembers the name (so the export writes it by name again)
@@ -80,31 +78,31 @@ TEST(RoundTripTest, GeometriesThatLookAlikeShareARow) {
       {"type": "sphere", "center": [6,0,0], "radius": 1, "material": "glass", "emission": [9,9,9]},
       {"type": "sphere", "center": [9,0,0], "radius": 1, "material": {"kT": 0.8}}]})",
                                          "named.json");
-  EXPECT_EQ(named.scene.appearanceIndex, (std::vector<std::uint32_t>{0, 0, 1, 2}));
-  ASSERT_NE(named.materialNameOf(2), nullptr);
-  EXPECT_EQ(*named.materialNameOf(2), "glass");
-  EXPECT_EQ(named.materialNameOf(3), nullptr);
+  EXPECT_EQ(litScene(named).appearanceIndex, (std::vector<std::uint32_t>{0, 0, 1, 2}));
+  ASSERT_NE(materialNameOf(named, 2), nullptr);
+  EXPECT_EQ(*materialNameOf(named, 2), "glass");
+  EXPECT_EQ(materialNameOf(named, 3), nullptr);
   // BVA01: a material differing in the last bit of one coefficient is another row
   const std::string twoLooks = R"({"camera": {"location": [0,0,10], "target": [0,0,0],
       "vpDistance": 1, "vpSize": [1,1], "resolution": [4,4]}, "geometries": [
       {"type": "sphere", "center": [0,0,0], "radius": 1, "material": {"kD": 0.2}},
       {"type": "sphere", "center": [3,0,0], "radius": 1, "material": {"kD": 0.20000000000000004}}]})";
-  EXPECT_EQ(2u, parseScene(twoLooks, "two.json").scene.appearances.size());
+  EXPECT_EQ(2u, litScene(parseScene(twoLooks, "two.json")).appearances.size());
 }
 
 TEST(RoundTripTest, KeepsNamesAndMaterialReferences) {
   // EP01: geometry names and "material by name" survive; inline materials stay inline.
   const SceneDocument doc = parseScene(dumpScene(loadScene(examplePath())), "dump");
-  ASSERT_EQ(doc.scene.geometries.size(), 8u);
+  ASSERT_EQ(litScene(doc).geometries.size(), 8u);
   ASSERT_NE(doc.geometryName(0), nullptr);
   EXPECT_EQ(*doc.geometryName(0), "floor");
   ASSERT_NE(doc.geometryName(1), nullptr);
   EXPECT_EQ(*doc.geometryName(1), "back wall");
   EXPECT_EQ(doc.geometryName(3), nullptr);
-  ASSERT_NE(doc.materialNameOf(2), nullptr);
-  EXPECT_EQ(*doc.materialNameOf(2), "glass");
-  EXPECT_EQ(doc.materialNameOf(3), nullptr);
-  EXPECT_EQ(doc.materials.size(), 3u);
+  ASSERT_NE(materialNameOf(doc, 2), nullptr);
+  EXPECT_EQ(*materialNameOf(doc, 2), "glass");
+  EXPECT_EQ(materialNameOf(doc, 3), nullptr);
+  EXPECT_EQ(namedMaterials(doc).materials.size(), 3u);
 }
 
 TEST(RoundTripTest, AwkwardNumbers) {
@@ -112,10 +110,10 @@ TEST(RoundTripTest, AwkwardNumbers) {
   // beyond 2^53 are written so that they read back to the same bits.
   SceneDocument doc = baseDocument();
   const double third = 1.0 / 3;
-  doc.scene.add(
+  litScene(doc).add(
       Sphere(Point(0.1, -0.0, 1e-300), third), Color(0.1, 1e300, 0),
       Material{Double3(third), Double3(0.1, 0.2, 0.3), Double3(0), Double3(-0.0), 7, 1.1, {}, {}});
-  doc.scene.add(Sphere(Point(9007199254740993.0, 1e22, -2.5e-8), 1e-7));
+  litScene(doc).add(Sphere(Point(9007199254740993.0, 1e22, -2.5e-8), 1e-7));
   doc.render.minK = 1e-9;
   const std::string dump1 = dumpScene(doc);
   const SceneDocument back = parseScene(dump1, "dump");
@@ -127,7 +125,7 @@ TEST(RoundTripTest, DirectionsComeBackExactly) {
   // EP01: a built-in scene's (1,1,1) normal is stored normalised; the export writes [1, 1, 1],
   // whose normalisation is exactly the stored normal.
   SceneDocument doc = baseDocument();
-  doc.scene.add(Plane(Point(0, 0, 0), Vector(1, 1, 1)));
+  litScene(doc).add(Plane(Point(0, 0, 0), Vector(1, 1, 1)));
   const std::string text = dumpScene(doc);
   EXPECT_NE(text.find("\"normal\": [1, 1, 1]"), std::string::npos) << text;
   EXPECT_EQ(Fingerprint(parseScene(text, "dump")).str(), Fingerprint(doc).str());
@@ -141,11 +139,11 @@ TEST(RoundTripTest, DirectionsComeBackExactly) {
   for (int i = 0; i < 300; ++i) {
     const Vector d(coordinate(random), coordinate(random), coordinate(random));
     const Point p(coordinate(random), coordinate(random), coordinate(random));
-    many.scene.add(Plane(p, d));
-    many.scene.add(Tube(1, Ray(p, d)));
-    many.scene.add(Cylinder(1, Ray(p, d), 2));
-    many.scene.addLight(DirectionalLight(Color(1, 1, 1), d));
-    many.scene.addLight(SpotLight(Color(1, 1, 1), p, d));
+    litScene(many).add(Plane(p, d));
+    litScene(many).add(Tube(1, Ray(p, d)));
+    litScene(many).add(Cylinder(1, Ray(p, d), 2));
+    litScene(many).addLight(DirectionalLight(Color(1, 1, 1), d));
+    litScene(many).addLight(SpotLight(Color(1, 1, 1), p, d));
   }
   EXPECT_EQ(Fingerprint(parseScene(dumpScene(many), "dump")).str(), Fingerprint(many).str());
 }
@@ -155,7 +153,7 @@ TEST(RoundTripTest, PlaneThroughThreePointsIsWrittenAsPointAndNormal) {
   // export writes.
   const SceneDocument doc = baseDocument();
   SceneDocument withPlane = doc;
-  withPlane.scene.add(Plane(Point(1, 2, 3), Point(-4, 0.5, 2), Point(0.3, 7, -1)));
+  litScene(withPlane).add(Plane(Point(1, 2, 3), Point(-4, 0.5, 2), Point(0.3, 7, -1)));
   const std::string text = dumpScene(withPlane);
   EXPECT_EQ(text.find("\"points\""), std::string::npos);
   EXPECT_EQ(Fingerprint(parseScene(text, "dump")).str(), Fingerprint(withPlane).str());
@@ -191,12 +189,12 @@ TEST(ToJsonTest, RejectsDocumentsThatCannotBeWritten) {
   EXPECT_THROW((void)toJson(noDirection), std::logic_error);
   // EP02: a geometry naming a material the document does not have.
   SceneDocument unknownName = baseDocument();
-  unknownName.scene.add(Sphere(Point(0, 0, 0), 1));
-  unknownName.appearanceMaterialNames.push_back("glass");
+  litScene(unknownName).add(Sphere(Point(0, 0, 0), 1));
+  namedMaterials(unknownName).rowNames.push_back("glass");
   EXPECT_THROW((void)toJson(unknownName), std::logic_error);
   // EP03: a geometry naming a material but carrying another one.
   SceneDocument mismatch = unknownName;
-  mismatch.materials["glass"] =
+  namedMaterials(mismatch).materials["glass"] =
       Material{Double3(0), Double3(0), Double3(0.5), Double3(0), 0, 1.5, {}, {}};
   EXPECT_THROW((void)toJson(mismatch), std::logic_error);
   // EP04: a name for a geometry that does not exist.
@@ -205,7 +203,7 @@ TEST(ToJsonTest, RejectsDocumentsThatCannotBeWritten) {
   EXPECT_THROW((void)toJson(tooManyNames), std::logic_error);
   // EP05: a shape without a row of the appearance table.
   SceneDocument noRow = baseDocument();
-  noRow.scene.geometries.add(Sphere(Point(0, 0, 0), 1));
+  litScene(noRow).geometries.add(Sphere(Point(0, 0, 0), 1));
   EXPECT_THROW((void)toJson(noRow), std::logic_error);
 }
 
@@ -213,7 +211,7 @@ TEST(DumpSceneTest, Layout) {
   // EP01: two-space indentation, short values on one line, a final newline, the documented key
   // order.
   SceneDocument doc = baseDocument();
-  doc.scene.add(Sphere(Point(0, 0, -1), 0.5));
+  litScene(doc).add(Sphere(Point(0, 0, -1), 0.5));
   EXPECT_EQ(dumpScene(doc),
             "{\n"
             "  \"camera\": {\n"

@@ -11,6 +11,7 @@
 #include <string>
 #include <variant>
 
+#include "scenefile/LitDocument.h"
 #include "scenefile/SceneDocument.h"
 
 namespace rt::testing {
@@ -37,25 +38,25 @@ class Fingerprint {
     label("render " + d.render.tracer);
     add(d.render.maxLevel);
     add(d.render.minK);
-    label("scene " + d.scene.name);
-    add(d.scene.background.rgb());
-    add(d.scene.ambientLight.ia().rgb());
-    add(d.scene.ambientLight.kA());
-    for (const LightSource& l : d.scene.lights) {
+    label("scene " + litScene(d).name);
+    add(litScene(d).background.rgb());
+    add(litScene(d).ambientLight.ia().rgb());
+    add(litScene(d).ambientLight.kA());
+    for (const LightSource& l : litScene(d).lights) {
       label("light");
       std::visit([this](const auto& light) { addLight(light); }, l);
     }
-    for (const auto& [name, m] : d.materials) {
+    for (const auto& [name, m] : namedMaterials(d).materials) {
       label("material " + name);
       add(m);
     }
-    for (std::uint32_t i = 0; i < d.scene.geometries.size(); ++i) {
+    for (std::uint32_t i = 0; i < litScene(d).geometries.size(); ++i) {
       label("geometry " + std::to_string(i));
-      std::visit([this](const auto& g) { addShape(g); }, d.scene.geometries[i]);
-      add(d.scene.appearanceOf(i).emission.rgb());
-      add(d.scene.appearanceOf(i).material);
+      std::visit([this](const auto& g) { addShape(g); }, litScene(d).geometries[i]);
+      add(litScene(d).appearanceOf(i).emission.rgb());
+      add(litScene(d).appearanceOf(i).material);
       if (const std::string* name = d.geometryName(i)) label("name " + *name);
-      if (const std::string* material = d.materialNameOf(i)) label("uses " + *material);
+      if (const std::string* material = materialNameOf(d, i)) label("uses " + *material);
     }
   }
 

@@ -2,54 +2,30 @@
 
 #include <set>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
-#include "camera/CourseScenes.h"
-#include "lighting/CourseScenes.h"
-#include "reflections/CourseScenes.h"
-#include "shadows/CourseScenes.h"
+#include "cli/CommandLine.h"
+#include "common/NearestName.h"
 
 namespace rt::cli {
 
-namespace {
+void registerCli(CliRegistry& registry);  // generated: one call per stage present
 
-/// Adds every scene of a stage's table, rendered by default with that stage's tracer.
-void addTable(std::vector<BuiltinScene>& out, std::span<const CourseScene> table,
-              std::string_view stage, std::string_view tracer) {
-  for (const CourseScene& entry : table) {
-    auto make = entry.make;
-    out.push_back({entry.name, entry.description, std::string(stage), std::string(tracer),
-                   [make, t = std::string(tracer)] { return toDocument(make(), t); }});
-  }
+const CliRegistry& cliRegistry() {
+  static const CliRegistry registry = [] {
+    CliRegistry r;
+    registerCli(r);
+    std::set<std::string_view> names;
+    for (const BuiltinScene& s : r.scenes)
+      if (!names.insert(s.name).second)
+        throw std::logic_error("built-in scenes: the name '" + s.name + "' is used twice");
+    return r;
+  }();
+  return registry;
 }
 
-std::vector<BuiltinScene> collectScenes() {
-  std::vector<BuiltinScene> scenes;
-  // Stage 4 has a single scene and no table; it is an ambient-only Scene, lifted to a LitScene
-  // (every shape black and matte) so that every tracer can render it.
-  scenes.push_back({"two-color",
-                    "the course's base render test: four flat pink shapes on green, ambient only",
-                    "stage04_camera", "ambient", [] {
-                      const SceneSetup<Scene> setup = twoColorScene();
-                      return toDocument({LitScene(setup.scene), setup.camera}, "ambient");
-                    }});
-  addTable(scenes, lightingScenes(), "stage05_lighting", "phong");
-  addTable(scenes, shadowScenes(), "stage06_shadows", "shadow");
-  addTable(scenes, reflectionScenes(), "stage07_reflections", "whitted");
-
-  std::set<std::string_view> names;
-  for (const BuiltinScene& s : scenes)
-    if (!names.insert(s.name).second)
-      throw std::logic_error("built-in scenes: the name '" + s.name + "' is used twice");
-  return scenes;
-}
-
-}  // namespace
-
-std::span<const BuiltinScene> builtinScenes() {
-  static const std::vector<BuiltinScene> scenes = collectScenes();
-  return scenes;
-}
+std::span<const BuiltinScene> builtinScenes() { return cliRegistry().scenes; }
 
 const BuiltinScene* findBuiltinScene(std::string_view name) {
   for (const BuiltinScene& s : builtinScenes())
@@ -57,12 +33,29 @@ const BuiltinScene* findBuiltinScene(std::string_view name) {
   return nullptr;
 }
 
-SceneDocument toDocument(const SceneSetup<LitScene>& setup, std::string_view tracer) {
-  SceneDocument doc;
-  doc.scene = setup.scene;
-  doc.camera = setup.camera;
-  doc.render.tracer = std::string(tracer);
-  return doc;
+SceneDocument makeBuiltinScene(const BuiltinScene& scene, std::span<const std::string> params) {
+  std::vector<std::string_view> known;
+  for (const SceneParam& p : scene.params) known.push_back(p.name);
+  SceneParams values;
+  for (const std::string& given : params) {
+    const std::size_t eq = given.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw UsageError("--param: expected NAME=VALUE, got '" + given + "'");
+    const std::string name = given.substr(0, eq);
+    if (known.empty())
+      throw UsageError("--param: the scene '" + scene.name + "' has no parameters, got '" + given +
+                       "'");
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      throw UsageError("--param: the scene '" + scene.name + "' has no parameter '" + name + "'" +
+                       didYouMean(name, known) + " (its parameters: " + list + ")");
+    }
+    if (!values.emplace(name, given.substr(eq + 1)).second)
+      throw UsageError("--param: '" + name + "' is given twice");
+  }
+  for (const SceneParam& p : scene.params) values.emplace(p.name, p.defaultValue);
+  return scene.make(values);
 }
 
 }  // namespace rt::cli

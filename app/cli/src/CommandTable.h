@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cli/CommandLine.h"
 #include "cli/Commands.h"
@@ -23,17 +24,23 @@ const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view 
 /// The scene argument and the options that change the scene, which render and probe share.
 struct SceneArguments {
   std::string argument;  ///< SCENE as given: a built-in scene's name or a .json scene file
+  std::vector<std::string> params;  ///< --param NAME=VALUE, for a built-in scene's parameters
+  std::optional<std::string> view;  ///< --view NAME: one of the scene's views
   std::optional<int> width, height;
   std::optional<std::string> tracer;
+  std::optional<int> seed;
 };
 
-/// Adds SCENE, --width W and --height H (integers, 1..Image::MAX_SIDE) and --tracer T (a known
-/// tracer's name) to command, bound to into; the help texts are the command's own.
+/// Adds SCENE, --param NAME=VALUE (repeatable), --view NAME, --width W and --height H (integers,
+/// 1..Image::MAX_SIDE), --tracer T (a tracer of this build) and --seed N to command, bound to
+/// into; the help texts of the size and the tracer are the command's own.
 void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
                        const std::string& heightHelp, const std::string& tracerHelp);
 
-/// The scene (loadSceneArgument) with the options applied, and the result checked: the
-/// resolution within Image::MAX_SIDE, the tracer known. @throws UsageError, SceneError.
+/// The scene (loadSceneArgument) with the options applied, and the result checked: the view
+/// known; the resolution within Image::MAX_SIDE (one of width and height given: the other keeps
+/// the scene's aspect ratio; both given with another aspect: the view plane's height follows,
+/// so pixels stay square); the tracer known. @throws UsageError, SceneError.
 SceneDocument sceneFromArguments(const SceneArguments& arguments);
 
 }  // namespace rt::cli

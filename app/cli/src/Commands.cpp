@@ -1,5 +1,7 @@
 #include "cli/Commands.h"
 
+#include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <ostream>
 #include <sstream>
@@ -9,6 +11,7 @@
 #include "camera/Image.h"
 #include "cli/BuiltinScenes.h"
 #include "cli/CommandLine.h"
+#include "cli/Registry.h"
 #include "cli/Tracers.h"
 #include "common/NearestName.h"
 #include "scenefile/SceneFile.h"
@@ -35,8 +38,14 @@ const char* const kFooter =
 int list(const Io& io) {
   std::size_t width = 0;
   for (const BuiltinScene& s : builtinScenes()) width = std::max(width, s.name.size());
-  for (const BuiltinScene& s : builtinScenes())
+  for (const BuiltinScene& s : builtinScenes()) {
     io.out << s.name << std::string(width - s.name.size() + 2, ' ') << s.description << "\n";
+    if (!s.params.empty()) {
+      io.out << std::string(width + 2, ' ') << "parameters (--param NAME=VALUE):";
+      for (const SceneParam& p : s.params) io.out << " " << p.name << "=" << p.defaultValue;
+      io.out << "\n";
+    }
+  }
   return EXIT_OK;
 }
 
@@ -47,6 +56,7 @@ CommandLine makeCommandLine() {
   addRenderCommand(rt);
   addProbeCommand(rt);
   addExportCommand(rt);
+  for (const auto& add : cliRegistry().commands) add(rt);
   return rt;
 }
 
@@ -55,8 +65,10 @@ CommandLine makeCommandLine() {
 void addListCommand(CommandLine& rt) {
   rt.addCommand(
       "list", "list the built-in scenes, one per line: name, then a short description",
-      "Every scene of the course's stages is built in; `rt render NAME` renders one with its\n"
-      "stage's tracer, and `rt export NAME` writes it as a scene file.\n",
+      "Every scene of the course's stages present in this build is built in; `rt render NAME`\n"
+      "renders one with its stage's tracer, and `rt export NAME` writes it as a scene file. A\n"
+      "scene with parameters lists them with their defaults; give others with\n"
+      "--param NAME=VALUE (render, probe, export).\n",
       list);
 }
 
@@ -98,10 +110,15 @@ const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view 
                    std::string(hint) + ")");
 }
 
-SceneDocument loadSceneArgument(std::string_view scene) {
-  if (scene.ends_with(".json") && !findBuiltinScene(scene)) return loadScene(std::string(scene));
-  return requireBuiltinScene(scene, "rt list shows the built-in scenes; a scene file ends in .json")
-      .make();
+SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params) {
+  if (scene.ends_with(".json") && !findBuiltinScene(scene)) {
+    if (!params.empty())
+      throw UsageError("--param: a scene file has no parameters (only built-in scenes have)");
+    return loadScene(std::string(scene));
+  }
+  return makeBuiltinScene(
+      requireBuiltinScene(scene, "rt list shows the built-in scenes; a scene file ends in .json"),
+      params);
 }
 
 std::string defaultOutputPath(std::string_view scene) {
@@ -112,6 +129,11 @@ std::string defaultOutputPath(std::string_view scene) {
 void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
                        const std::string& heightHelp, const std::string& tracerHelp) {
   command.add_option("SCENE", into.argument, "a built-in scene's name or a .json scene file");
+  command
+      .add_option("--param", into.params,
+                  "a built-in scene's parameter, NAME=VALUE (repeatable; see rt list)")
+      ->type_name("NAME=VALUE");
+  addOptional(command, "--view", into.view, "one of the scene's named views (its cameras)", "NAME");
   addOptional(command, "--width", into.width, widthHelp, "W")
       ->transform(integerValidator(1, Image::MAX_SIDE));
   addOptional(command, "--height", into.height, heightHelp, "H")
@@ -122,18 +144,57 @@ void addSceneArguments(CLI::App& command, SceneArguments& into, const std::strin
             return tracerNamed(name) ? std::string() : unknownTracerMessage(name);
           },
           ""));
+  addOptional(command, "--seed", into.seed,
+              "the random numbers' seed: changes the noise of sampled renders (default: the "
+              "scene's render.seed)",
+              "N")
+      ->transform(integerValidator(0, INT_MAX));
 }
 
 SceneDocument sceneFromArguments(const SceneArguments& arguments) {
-  SceneDocument doc = loadSceneArgument(arguments.argument);
+  SceneDocument doc = loadSceneArgument(arguments.argument, arguments.params);
+  if (arguments.view) {
+    std::vector<std::string_view> names;
+    const NamedView* chosen = nullptr;
+    for (const NamedView& v : doc.views) {
+      names.push_back(v.name);
+      if (v.name == *arguments.view) chosen = &v;
+    }
+    if (!chosen) {
+      std::string known;
+      for (std::string_view n : names) known += (known.empty() ? "" : ", ") + std::string(n);
+      throw UsageError("--view: the scene has no view '" + *arguments.view + "'" +
+                       didYouMean(*arguments.view, names) + " (" +
+                       (names.empty() ? std::string("it has none") : "its views: " + known) + ")");
+    }
+    doc.camera = chosen->camera;
+  }
+  CameraSpec& c = doc.camera;
   constexpr int kMax = Image::MAX_SIDE;
-  if (arguments.width) doc.camera.nX = *arguments.width;
-  if (arguments.height) doc.camera.nY = *arguments.height;
-  if (doc.camera.nX < 1 || doc.camera.nX > kMax || doc.camera.nY < 1 || doc.camera.nY > kMax)
-    throw UsageError("the scene's resolution " + std::to_string(doc.camera.nX) + "x" +
-                     std::to_string(doc.camera.nY) + " is outside 1.." + std::to_string(kMax) +
-                     " per side");
+  const int nX0 = c.nX, nY0 = c.nY;
+  const auto scaled = [](int given, int num, int den) {
+    return static_cast<int>(
+        std::max<long long>(1, (2LL * given * num + den) / (2LL * den)));  // given·num/den, rounded
+  };
+  if (arguments.width && arguments.height) {
+    c.nX = *arguments.width;
+    c.nY = *arguments.height;
+    // Another aspect ratio than the scene's: the view plane's height follows the image's, so
+    // that pixels stay square and nothing is squashed.
+    if (static_cast<long long>(c.nX) * nY0 != static_cast<long long>(c.nY) * nX0)
+      c.vpHeight = c.vpWidth * c.nY / c.nX;
+  } else if (arguments.width) {
+    c.nX = *arguments.width;
+    c.nY = scaled(c.nX, nY0, nX0);
+  } else if (arguments.height) {
+    c.nY = *arguments.height;
+    c.nX = scaled(c.nY, nX0, nY0);
+  }
+  if (c.nX < 1 || c.nX > kMax || c.nY < 1 || c.nY > kMax)
+    throw UsageError("the image's resolution " + std::to_string(c.nX) + "x" + std::to_string(c.nY) +
+                     " is outside 1.." + std::to_string(kMax) + " per side");
   if (arguments.tracer) doc.render.tracer = *arguments.tracer;
+  if (arguments.seed) doc.render.seed = static_cast<std::uint64_t>(*arguments.seed);
   findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
   return doc;
 }

@@ -5,6 +5,7 @@
 
 #include "CommandTable.h"
 #include "camera/Camera.h"
+#include "cli/Registry.h"
 #include "cli/Tracers.h"
 #include "cli/Values.h"
 #include "common/JsonText.h"
@@ -28,7 +29,13 @@ int probe(const ProbeArgs& args, const Io& io) {
                      " --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)");
   SceneDocument doc = sceneFromArguments(args.scene);
 
+  const CliRegistry& registry = cliRegistry();
+  const std::unique_ptr<Intersectable> accelerator =
+      registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
+  const std::unique_ptr<RayTracer> tracer =
+      findTracer(doc.render.tracer).make(doc, accelerator.get());
   std::optional<Ray> ray;
+  Color color;
   if (byRay) {
     const auto& [originText, directionText] = *args.ray;
     const Double3 origin = parseTriple(originText, "--ray origin");
@@ -36,22 +43,26 @@ int probe(const ProbeArgs& args, const Io& io) {
     if (direction.isZero())
       throw UsageError("--ray direction: must not be the zero vector, got '" + directionText + "'");
     ray.emplace(Point(origin), Vector(direction));
+    color = tracer->traceRay(*ray);
   } else {
     const int nX = doc.camera.nX, nY = doc.camera.nY;
     const auto [x, y] = parseIntPair(*args.pixel, "--pixel", nX - 1, nY - 1);
-    // constructRay takes the grid as arguments: a 1x1 camera spares the nX x nY image.
-    ray = doc.camera.builder().setResolution(1, 1).build().constructRay(nX, nY, x, y);
+    const Camera camera = doc.camera.builder().build();
+    // The hits are those of the ray through the pixel's centre; the colour is the pixel's, as a
+    // render computes it (every sample of the render's sampler): the same bits as in the image.
+    ray = camera.ray(x + 0.5, y + 0.5);
+    RayCounts counts;
+    color = registry.makeSampler(doc.render)->pixelColor(camera, *tracer, x, y, counts);
   }
-  const std::unique_ptr<RayTracer> tracer = findTracer(doc.render.tracer).make(doc);
-  io.out << probeJson(doc, *ray, *tracer);
+  io.out << probeJson(doc, *ray, color);
   return EXIT_OK;
 }
 
 }  // namespace
 
-std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer) {
+std::string probeJson(const SceneDocument& doc, const Ray& ray, const Color& color) {
   using Json = nlohmann::ordered_json;
-  const Geometries& shapes = doc.scene.geometries;
+  const Geometries& shapes = doc.scene->geometries;
   Json hits = Json::array();
   for (const GeoPoint& h : shapes.findGeoIntersections(ray)) {
     const std::string* name = doc.geometryName(h.geometry);
@@ -65,7 +76,7 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer&
                         {{"origin", jsonTriple(ray.head().xyz())},
                          {"direction", jsonTriple(ray.direction().xyz())}}},
                        {"hits", std::move(hits)},
-                       {"color", jsonTriple(tracer.traceRay(ray).rgb())}};
+                       {"color", jsonTriple(color.rgb())}};
   // The scene files' layout: one member per line, a hit per line, numbers in their shortest
   // round-trip form.
   return formatJson(answer);

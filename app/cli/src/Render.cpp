@@ -14,6 +14,7 @@
 #include "camera/ImageWriter.h"
 #include "camera/RenderBlock.h"
 #include "cli/Progress.h"
+#include "cli/Registry.h"
 #include "cli/Tracers.h"
 
 namespace rt::cli {
@@ -54,17 +55,20 @@ int render(const RenderArgs& args, const Io& io) {
   const int nX = doc.camera.nX, nY = doc.camera.nY;
   checkImageFits(nX, nY);
 
+  const CliRegistry& registry = cliRegistry();
   const TracerKind& kind = findTracer(doc.render.tracer);
-  const std::unique_ptr<RayTracer> tracer = kind.make(doc);
+  const std::unique_ptr<Intersectable> accelerator =
+      registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
+  const std::unique_ptr<RayTracer> tracer = kind.make(doc, accelerator.get());
+  const std::unique_ptr<PixelSampler> sampler = registry.makeSampler(doc.render);
   const Camera camera = doc.camera.builder().setResolution(nX, nY).build();
-  const CenterSampler sampler;
   Image image(nX, nY);
 
   const bool quiet = args.quiet;
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   const auto start = std::chrono::steady_clock::now();
   std::atomic<std::uint64_t> donePixels{0};
-  RayCounts counts;
+  RenderOutcome outcome;
   bool interrupted = false;
   {
     std::unique_ptr<ProgressMonitor> progress;
@@ -76,19 +80,13 @@ int render(const RenderArgs& args, const Io& io) {
           io.errIsTerminal ? ProgressMonitor::Style::Terminal : ProgressMonitor::Style::Lines,
           donePixels, total, static_cast<std::uint64_t>(nX));
     }
-    // Row by row: a stop request (Ctrl-C) is seen within a row; each row's counts are added
-    // once, and its pixels reported to the progress thread once.
-    for (int y = 0; y < nY && !interrupted; ++y) {
-      if (io.stop && io.stop->load(std::memory_order_relaxed)) {
-        interrupted = true;
-        break;
-      }
-      const PixelBlock row{0, y, nX, y + 1};
-      counts += renderBlock(camera, *tracer, sampler, row, image);
-      donePixels.fetch_add(row.pixels(), std::memory_order_relaxed);
-    }
-    // A Ctrl-C that arrives after the last row still means "stop": nothing is written.
-    if (io.stop && io.stop->load()) interrupted = true;
+    // The build's render loop (rows on this thread; tiles on a pool of threads from mini project
+    // 2 on): it sees a stop request (Ctrl-C) within a block of pixels, adds each block's counts
+    // once and reports its pixels to the progress thread once.
+    outcome = registry.render(
+        {camera, *tracer, *sampler, image, doc.render.threads, io.stop, donePixels});
+    // A Ctrl-C that arrives after the last block still means "stop": nothing is written.
+    interrupted = outcome.interrupted || (io.stop && io.stop->load());
   }  // the progress thread is stopped here, before anything else is printed
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -98,6 +96,7 @@ int render(const RenderArgs& args, const Io& io) {
     return EXIT_INTERRUPTED;
   }
   PngImageWriter().write(image, output);
+  const RayCounts& counts = outcome.counts;
   if (!quiet) {
     // The rate counts primary rays (pixels), the figure that compares across tracers; the
     // secondary and shadow rays the tracer cast are named when there are any.

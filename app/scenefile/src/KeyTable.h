@@ -5,14 +5,17 @@
 ///
 /// A row is (key, presence, default, reader). readObject
 ///   1. checks that the value is an object;
-///   2. rejects any key that is not in the table, suggesting the nearest known one;
+///   2. rejects any key that is not in the table: a key of a stage this build does not have is
+///      named with that stage ("needs stage05_lighting"), any other gets the nearest known one;
 ///   3. walks the table in order: a present key goes to its reader; an absent required key is
 ///      an error; an absent key with a default gets its default (JSON text, parsed once when the
 ///      table is built) through the same reader, so defaults obey the same rules as the file.
 /// Objects with a "type" (lights, geometries) pick their table from a second table of types.
 ///
-/// Adding a setting to the format (a render option of a mini project, say) is one row.
+/// The tables are assembled from the key catalogue (Format.h: every key of every stage, in the
+/// documented order) and the readers the format's parts attach (one part per stage present).
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,7 +34,7 @@ enum class Presence {
 
 template <typename Target>
 struct Key {
-  using Reader = void (*)(const Node& value, Target& target);
+  using Reader = std::function<void(const Node& value, Target& target)>;
 
   /// @param defaultText for Defaulted, the default as JSON text; for Optional, a phrase for the
   ///        documentation ("none"); for Required, empty.
@@ -39,7 +42,7 @@ struct Key {
       : name(keyName),
         presence(keyPresence),
         defaultText(keyDefault),
-        read(reader),
+        read(std::move(reader)),
         defaultValue(keyPresence == Presence::Defaulted ? Json::parse(keyDefault) : Json()) {}
 
   std::string_view name;
@@ -49,22 +52,38 @@ struct Key {
   Json defaultValue;
 };
 
+/// A key the format has but this build does not read: its stage is not in the build.
+struct AbsentKey {
+  std::string_view name;
+  std::string_view stage;
+};
+
 template <typename Target>
-using KeyTable = std::vector<Key<Target>>;
+struct KeyTable {
+  std::vector<Key<Target>> keys;
+  std::vector<AbsentKey> absent;
+};
 
 /// The names of a table's keys, plus extra ones (the "type" of a typed object).
 template <typename Target>
 std::vector<std::string_view> keyNames(const KeyTable<Target>& table,
                                        std::initializer_list<std::string_view> extra = {}) {
   std::vector<std::string_view> names(extra);
-  for (const Key<Target>& key : table) names.push_back(key.name);
+  for (const Key<Target>& key : table.keys) names.push_back(key.name);
   return names;
 }
 
-/// The unknown-key error of an object read against names: "unknown key 'raduis'; did you mean
-/// 'radius'?" or, with no near name, the list of the known keys.
-[[noreturn]] inline void failUnknownKey(const Node& member, std::string_view key,
-                                        std::span<const std::string_view> names) {
+/// The unknown-key error of an object read against its table: for a key of a stage this build
+/// lacks, "the key 'lights' needs stage05_lighting, which this build does not include"; else
+/// "unknown key 'raduis'; did you mean 'radius'?" or, with no near name, the known keys.
+template <typename Target>
+[[noreturn]] void failUnknownKey(const Node& member, std::string_view key,
+                                 const KeyTable<Target>& table,
+                                 std::span<const std::string_view> names) {
+  for (const AbsentKey& a : table.absent)
+    if (a.name == key)
+      member.failAtKey("the key '" + std::string(key) + "' needs " + std::string(a.stage) +
+                       ", which this build does not include (a course cut before it)");
   std::string detail = "unknown key";
   if (const std::string_view near = nearestName(key, names); !near.empty())
     detail += "; did you mean '" + std::string(near) + "'?";
@@ -82,9 +101,9 @@ void readObject(const Node& node, const KeyTable<Target>& table, Target& target,
   const std::vector<std::string_view> names = keyNames(table, also);
   node.forEachMember([&](std::string_view key, const Node& member) {
     if (std::find(names.begin(), names.end(), key) == names.end())
-      failUnknownKey(member, key, names);
+      failUnknownKey(member, key, table, names);
   });
-  for (const Key<Target>& key : table) {
+  for (const Key<Target>& key : table.keys) {
     if (node.find(key.name)) {
       key.read(node.member(key.name), target);
     } else if (key.presence == Presence::Required) {
@@ -101,7 +120,7 @@ struct TypeRule {
   std::string_view type;
   const KeyTable<Fields>* keys;
   /// Builds the object from the fields (node is the whole object, for messages).
-  void (*build)(const Node& node, Fields& fields);
+  std::function<void(const Node& node, Fields& fields)> build;
 };
 
 /// Reads an object with a "type" key: picks the rule for its type ("expected a WHAT type

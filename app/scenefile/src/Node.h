@@ -3,10 +3,12 @@
 /// A value of the document being read, with what an error message needs: its JSON path (built
 /// only when an error is reported, from the chain of parents) and its position in the text.
 
+#include <any>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
-#include <unordered_map>
+#include <typeindex>
 
 #include <nlohmann/json.hpp>
 
@@ -20,14 +22,25 @@ using Json = nlohmann::ordered_json;
 /// What every reader shares: the text and its positions for messages, and the document being
 /// built (a geometry's "material" looks up the materials read before it).
 struct Context {
+  Context(std::string_view sourceText, std::string sourceName, const SourceMap& sourceMap)
+      : text(sourceText), source(std::move(sourceName)), map(sourceMap) {}
+
   std::string_view text;
   std::string source;
   const SourceMap& map;
   SceneDocument doc;
-  /// The rows of doc.scene's appearance table so far, by what makes them equal: the bits of the
-  /// emission and of the material, and the material's name when given by name. Geometries that
-  /// look the same share one row.
-  std::unordered_map<std::string, std::uint32_t> appearanceRows;
+
+  /// What a part of the format keeps while it reads (stage 5: its index of the appearance
+  /// table's rows), one value per type.
+  template <typename T>
+  T& state() {
+    std::any& slot = states_[std::type_index(typeid(T))];
+    if (!slot.has_value()) slot = T{};
+    return std::any_cast<T&>(slot);
+  }
+
+ private:
+  std::map<std::type_index, std::any> states_;
 };
 
 class Node {

@@ -60,6 +60,11 @@ std::string readString(const Node& n) {
   return n.json().get<std::string>();
 }
 
+bool readBoolean(const Node& n) {
+  if (!n.json().is_boolean()) n.expected("true or false");
+  return n.json().get<bool>();
+}
+
 Point readPoint(const Node& n) {
   if (!isArrayOf(n, 3)) n.expected("a point [x,y,z]");
   double xyz[3];

@@ -30,6 +30,8 @@ double readNumberIn(const Node& n, double lo, double hi);
 /// integers, common/Integers.h.
 int readInteger(const Node& n, int lo, int hi = INT_MAX);
 std::string readString(const Node& n);
+/// true or false.
+bool readBoolean(const Node& n);
 /// [x,y,z] of finite numbers.
 Point readPoint(const Node& n);
 /// [x,y,z] of finite numbers, not the zero vector, of finite length.

@@ -32,12 +32,6 @@ struct GalaxyParams {
   int positionsPerArm() const;
 };
 
-/// A named point of view of a scene.
-struct NamedView {
-  std::string name;
-  CameraSpec camera;
-};
-
 struct GalaxySetup {
   LitScene scene;
   CameraSpec camera;  ///< the seed's view: from (100,27,22) at (4,8,4), 1280 x 720

@@ -6,6 +6,7 @@
 /// with it. A new camera property is a field here, a setter in Camera::Builder and its use.
 
 #include <optional>
+#include <string>
 
 #include "primitives/Point.h"
 #include "primitives/Vector.h"
@@ -42,6 +43,12 @@ struct CameraSpec {
   /// include camera/Camera.h to use it.
   /// @throws std::invalid_argument for a field its setter refuses (a zero view plane, say).
   CameraBuilder builder() const;
+};
+
+/// A named point of view of a scene (a scene file's "views", the galaxy's "above").
+struct NamedView {
+  std::string name;
+  CameraSpec camera;
 };
 
 /// A ready-to-render scene and the camera that frames it: what a built-in scene of `rt` is, and

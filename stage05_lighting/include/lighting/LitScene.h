@@ -33,7 +33,8 @@ struct LitScene : Scene {
   std::vector<LightSource> lights;
 
   LitScene() = default;
-  /// An unlit scene (stage 4) as a lit one: every shape gets one default Appearance (row 0).
+  /// An unlit scene (stage 4) as a lit one: every shape gets one default Appearance (row 0; no
+  /// row at all for a scene without shapes).
   explicit LitScene(const Scene& base);
 
   /// Adds a row to the table and returns its index.

@@ -18,7 +18,7 @@
 #include <string>
 #include <string_view>
 
-#include "camera/RayTracer.h"
+#include "primitives/Color.h"
 #include "primitives/Ray.h"
 #include "scenefile/SceneDocument.h"
 
@@ -48,10 +48,11 @@ std::string versionString();
 
 // ---- Pieces shared by the commands (and tested on their own) ----
 
-/// A built-in scene's name or a path ending in ".json", as a document.
-/// @throws UsageError for an unknown name (suggesting the nearest one); the scene-file library's
-///         SceneError (its message names file, line and column) for a bad file.
-SceneDocument loadSceneArgument(std::string_view scene);
+/// A built-in scene's name (with its --param values) or a path ending in ".json", as a document.
+/// @throws UsageError for an unknown name (suggesting the nearest one) or a bad parameter; the
+///         scene-file library's SceneError (its message names file, line and column) for a bad
+///         file.
+SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params = {});
 
 /// Where `rt render SCENE` writes without -o: NAME.png for a built-in scene, the file's name
 /// with .png instead of .json for a scene file; in the current directory either way.
@@ -78,8 +79,8 @@ void checkOutputWritable(const std::string& path, const OutputKind& kind,
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
 /// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals
 /// the outward geometric ones, name the geometry's name in the document or null, color the
-/// tracer's traceRay (unclamped). Written by formatJson (common/JsonText.h), the scene files'
-/// layout.
-std::string probeJson(const SceneDocument& doc, const Ray& ray, const RayTracer& tracer);
+/// colour given (unclamped): the tracer's for the ray, or the pixel's. Written by formatJson
+/// (common/JsonText.h), the scene files' layout.
+std::string probeJson(const SceneDocument& doc, const Ray& ray, const Color& color);
 
 }  // namespace rt::cli

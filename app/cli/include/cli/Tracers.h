@@ -1,36 +1,31 @@
 #pragma once
 /// @file Tracers.h
-/// The tracer family by name, one per stage, so that one scene can be rendered by each stage's
-/// tracer and the images (and timings) compared: `rt render NAME --tracer phong`.
+/// The tracer family by name, one per stage present, so that one scene can be rendered by each
+/// stage's tracer and the images (and timings) compared: `rt render NAME --tracer phong`.
 
-#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
 
-#include "camera/RayTracer.h"
-#include "scenefile/SceneDocument.h"
+#include "cli/Registry.h"
 
 namespace rt::cli {
 
-struct TracerKind {
-  std::string_view name;         ///< the value of --tracer and of a scene file's render.tracer
-  std::string_view stage;        ///< the stage that adds it
-  std::string_view description;  ///< one line
-  /// Builds the tracer over doc.scene with doc.render's settings; doc must outlive it.
-  std::unique_ptr<RayTracer> (*make)(const SceneDocument& doc);
-};
-
-/// ambient, phong, shadow, whitted.
+/// The tracers of this build, in the course's order (ambient, phong, shadow, whitted, beams in
+/// the full course).
 std::span<const TracerKind> tracerKinds();
 
-/// The tracer called name, or nullptr.
+/// The tracer called name; the build's default (its highest stage's) for an empty name; or
+/// nullptr.
 const TracerKind* tracerNamed(std::string_view name);
 
-/// "unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong shadow whitted)".
+/// "unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong ...)", or for a tracer of
+/// a stage the build does not have, "the tracer 'whitted' needs stage07_reflections, which this
+/// build does not include".
 std::string unknownTracerMessage(std::string_view name);
 
-/// The tracer called name. @throws UsageError "WHAT: " + unknownTracerMessage(name).
+/// The tracer called name (empty: the default). @throws UsageError "WHAT: " +
+/// unknownTracerMessage(name).
 const TracerKind& findTracer(std::string_view name, std::string_view what = "--tracer");
 
 }  // namespace rt::cli

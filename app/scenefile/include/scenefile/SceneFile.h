@@ -11,6 +11,7 @@
 /// Writing produces a file that reads back to an identical document (every number written so
 /// that it round-trips exactly, materials inline or by name as in the document, names kept).
 
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -67,18 +68,29 @@ nlohmann::ordered_json toJson(const SceneDocument& doc);
 /// toJson(doc) as text: two-space indentation, arrays of numbers on one line, final newline.
 std::string dumpScene(const SceneDocument& doc);
 
-/// The values of render.tracer the loader accepts, in the order of the course.
-std::span<const std::string_view> knownTracers();
+/// The values of render.tracer this build accepts (its stages' tracers), in the course's order.
+std::vector<std::string_view> knownTracers();
 
-/// One key of the format, as the loader's tables define it (for documentation and its test).
+/// The stage that adds the course's tracer called name when this build does not have it (a
+/// course cut before that stage); empty when the build has it, or when no stage adds one.
+std::string_view missingTracerStage(std::string_view name);
+
+/// The scene as this build's scene model: a LitScene from stage 5 on (every shape with the
+/// default appearance when scene is a stage-4 Scene), else a copy of the Scene. What a
+/// document's scene is.
+std::shared_ptr<Scene> sceneModelOf(const Scene& scene);
+
+/// One key of the format (for documentation and its test).
 struct SceneKeyInfo {
   std::string object;       ///< "camera", "geometry sphere", "light spot", "material", ...
   std::string key;          ///< the key's name
+  std::string stage;        ///< the stage that gives it a meaning: a build without it refuses it
   bool required = false;    ///< true when the key must be given
   std::string defaultText;  ///< the default as JSON, or a phrase ("none") for optional keys
 };
 
-/// Every key of every object type of the format, in table order.
+/// Every key of every object type of the format (of every stage, present or not), in the
+/// documented order.
 std::vector<SceneKeyInfo> sceneFormatKeys();
 
 }  // namespace rt

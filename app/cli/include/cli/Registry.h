@@ -1,0 +1,95 @@
+#pragma once
+/// @file Registry.h
+/// What `rt` knows of each stage present in its build, registered by one part per stage
+/// (src/parts/<stage folder>.cpp, called by a source CMake generates from the stages built): the
+/// tracers, the built-in scenes, and how a render is sampled, accelerated and run. A course cut
+/// after stage 5 has the ambient and Phong tracers and the scenes of stages 4 and 5; nothing else
+/// exists in it, and there is no #if anywhere.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "camera/Camera.h"
+#include "camera/RayTracer.h"
+#include "camera/RenderBlock.h"
+#include "intersections/Intersectable.h"
+#include "scenefile/SceneDocument.h"
+
+namespace rt::cli {
+
+class CommandLine;
+
+struct TracerKind {
+  std::string name;         ///< the value of --tracer and of a scene file's render.tracer
+  std::string stage;        ///< the stage that adds it
+  std::string description;  ///< one line
+  /// Builds the tracer over doc's scene with doc.render's settings, intersecting accelerator
+  /// instead of the scene's shapes when not null; doc and accelerator must outlive it.
+  std::function<std::unique_ptr<RayTracer>(const SceneDocument& doc,
+                                           const Intersectable* accelerator)>
+      make;
+};
+
+/// A parameter of a built-in scene (`rt render galaxy --param arms=12`).
+struct SceneParam {
+  std::string name;
+  std::string defaultValue;
+  std::string description;
+};
+
+/// The values given with --param, by name (checked against the scene's parameters).
+using SceneParams = std::map<std::string, std::string>;
+
+struct BuiltinScene {
+  std::string name;                ///< kebab-case, unique
+  std::string description;         ///< one line
+  std::string stage;               ///< the stage folder that defines it, "stage05_lighting"
+  std::string tracer;              ///< the tracer of that stage
+  std::vector<SceneParam> params;  ///< empty for the course's fixed scenes
+  /// Builds the scene as a document (scene, cameras, render settings with the tracer above).
+  /// @throws UsageError naming a parameter whose value it refuses.
+  std::function<SceneDocument(const SceneParams& params)> make;
+};
+
+/// One render: the image of camera, every pixel by sampler, traced by tracer.
+struct RenderJob {
+  const Camera& camera;
+  const RayTracer& tracer;
+  const PixelSampler& sampler;
+  Image& image;
+  int threads;                             ///< 0: every core (when the build has threads)
+  const std::atomic<bool>* stop;           ///< raised to stop (Ctrl-C); may be null
+  std::atomic<std::uint64_t>& donePixels;  ///< pixels finished, for the progress thread
+};
+
+struct RenderOutcome {
+  RayCounts counts;
+  bool interrupted = false;
+  int threads = 1;  ///< how many threads rendered
+};
+
+struct CliRegistry {
+  std::vector<TracerKind> tracers;   ///< in the course's order; the last is the default
+  std::vector<BuiltinScene> scenes;  ///< stage by stage
+  /// The sampler render settings ask for (stage 4: one ray through each pixel's centre).
+  std::function<std::unique_ptr<PixelSampler>(const RenderSettings&)> makeSampler;
+  /// The acceleration structure render settings ask for, or null (no acceleration: the
+  /// scene's own list). Set from mini project 2 on.
+  std::function<std::unique_ptr<Intersectable>(const SceneDocument&)> makeAccelerator;
+  /// Renders a job (stage 4: one row after another on the calling thread).
+  std::function<RenderOutcome(const RenderJob&)> render;
+  /// Commands a stage adds to rt (mini project 2: bench).
+  std::vector<std::function<void(CommandLine&)>> commands;
+};
+
+/// The registry of this build: every present stage's part registered (on the first call).
+/// @throws std::logic_error (at the first call) if two built-in scenes share a name.
+const CliRegistry& cliRegistry();
+
+}  // namespace rt::cli

@@ -1,0 +1,30 @@
+#pragma once
+// Internal to the stage parts from stage 5 on: a stage's table of course scenes as built-in
+// scenes, each rendered by default with that stage's tracer.
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "cli/Registry.h"
+#include "lighting/CourseScenes.h"
+#include "scenefile/LitDocument.h"
+
+namespace rt::cli {
+
+inline void addCourseScenes(CliRegistry& registry, std::span<const CourseScene> table,
+                            std::string_view stage, std::string_view tracer) {
+  for (const CourseScene& entry : table) {
+    auto make = entry.make;
+    registry.scenes.push_back({entry.name, entry.description, std::string(stage),
+                               std::string(tracer), {},
+                               [make, t = std::string(tracer)](const SceneParams&) {
+                                 const SceneSetup<LitScene> setup = make();
+                                 SceneDocument doc = litDocument(setup.scene, setup.camera);
+                                 doc.render.tracer = t;
+                                 return doc;
+                               }});
+  }
+}
+
+}  // namespace rt::cli

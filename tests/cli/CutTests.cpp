@@ -1,0 +1,153 @@
+// `rt` in every course cut (label cli; built whenever rt is): the program of a repository cut
+// after any stage from stage 4 on lists the scenes of the stages present, offers their tracers,
+// renders, and refuses a scene-file key or a tracer of a stage the cut does not have, naming it.
+// Every test holds in every cut: it asks the build which stages it has (the tracers the scene
+// format knows) and expects the answer of that build.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "camera/ImageWriter.h"
+#include "cli/BuiltinScenes.h"
+#include "cli/Commands.h"
+#include "cli/Tracers.h"
+#include "scenefile/SceneFile.h"
+
+namespace rt::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+Outcome run(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int code = runRt(args, Io{out, err});
+  return {code, out.str(), err.str()};
+}
+
+std::string freshDirectory(const std::string& name) {
+  const fs::path dir = fs::path("cli-test-output") / ("cut-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+/// True when this build has the stage that adds the tracer (a tracer of the course).
+bool has(std::string_view tracer) {
+  return missingTracerStage(tracer).empty();
+}
+
+TEST(CutTests, theTracersAreThoseOfTheStagesPresent) {
+  // TC01: rt's tracers are the scene format's, in the same order, and include stage 4's
+  std::vector<std::string_view> ours;
+  for (const TracerKind& t : tracerKinds()) ours.push_back(t.name);
+  EXPECT_EQ(knownTracers(), ours);
+  ASSERT_FALSE(ours.empty());
+  EXPECT_EQ("ambient", ours.front());
+  // TC02: the default tracer (an empty name) is the highest stage's
+  ASSERT_NE(nullptr, tracerNamed(""));
+  EXPECT_EQ(ours.back(), tracerNamed("")->name);
+  // TC03: a tracer of a stage the cut lacks is refused naming that stage; one it has is
+  // accepted (the whole course has every tracer)
+  const Outcome beams = run({"render", "two-color", "--tracer", "beams", "--width", "4", "-o",
+                             freshDirectory("beams") + "/x.png", "--quiet"});
+  if (has("beams")) {
+    EXPECT_EQ(0, beams.code) << beams.err;
+  } else {
+    EXPECT_EQ(2, beams.code);
+    EXPECT_EQ(
+        "rt: --tracer: the tracer 'beams' needs mini1_glossy, which this build does not include "
+        "(a course cut before it)\n",
+        beams.err);
+  }
+}
+
+TEST(CutTests, listShowsTheScenesOfTheStagesPresent) {
+  const Outcome r = run({"list"});
+  ASSERT_EQ(0, r.code) << r.err;
+  // TC01: stage 4's scene is in every cut, and every scene listed is a built-in scene of a
+  // stage whose tracer this build has
+  EXPECT_EQ(0u, r.out.rfind("two-color  ", 0));
+  std::set<std::string> tracers;
+  for (const TracerKind& t : tracerKinds()) tracers.insert(t.name);
+  for (const BuiltinScene& s : builtinScenes()) {
+    EXPECT_NE(std::string::npos, r.out.find(s.name + "  ")) << s.name;
+    EXPECT_EQ(1u, tracers.count(s.tracer)) << s.name << " needs " << s.tracer;
+  }
+  // TC02: the galaxy only with mini project 1
+  EXPECT_EQ(has("beams"), r.out.find("galaxy  ") != std::string::npos);
+}
+
+TEST(CutTests, rendersAndExportsInEveryCut) {
+  const std::string dir = freshDirectory("render");
+  // TC01: the base render test with the build's default tracer: the sphere's centre is the
+  // course's pink (the ambient light; from stage 5 on the shapes are black and matte, so every
+  // tracer sees the same), a corner the green background
+  const Outcome r = run({"render", "two-color", "--width", "20", "-o", dir + "/a.png", "--quiet"});
+  ASSERT_EQ(0, r.code) << r.err;
+  const Rgb8Image a = readPng(dir + "/a.png");
+  EXPECT_EQ(20, a.width);
+  EXPECT_EQ(20, a.height);
+  EXPECT_EQ((std::array<unsigned char, 3>{255, 191, 191}), a.at(10, 10));
+  EXPECT_EQ((std::array<unsigned char, 3>{75, 127, 90}), a.at(19, 0));
+  // TC02: its export renders to the same bytes
+  const Outcome e = run({"export", "two-color", "-o", dir + "/two-color.json"});
+  ASSERT_EQ(0, e.code) << e.err;
+  const Outcome b =
+      run({"render", dir + "/two-color.json", "--width", "20", "-o", dir + "/b.png", "--quiet"});
+  ASSERT_EQ(0, b.code) << b.err;
+  std::ifstream fa(dir + "/a.png", std::ios::binary), fb(dir + "/b.png", std::ios::binary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(fa), {}),
+            std::string(std::istreambuf_iterator<char>(fb), {}));
+}
+
+TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
+  const std::string dir = freshDirectory("keys");
+  const std::string camera =
+      R"("camera": {"location": [0, 0, 10], "target": [0, 0, 0], "vpDistance": 1,
+                 "vpSize": [1, 1], "resolution": [4, 4]})";
+  // TC01: lights (stage 5)
+  writeText(dir + "/lights.json", "{" + camera + ",\n \"lights\": []}");
+  const Outcome lights = run({"render", dir + "/lights.json", "-o", dir + "/l.png", "--quiet"});
+  if (has("phong")) {
+    EXPECT_EQ(0, lights.code) << lights.err;
+  } else {
+    EXPECT_EQ(2, lights.code);
+    EXPECT_EQ("rt: " + dir + "/lights.json:3:2: lights: the key 'lights' needs stage05_lighting, " +
+                  "which this build does not include (a course cut before it)\n",
+              lights.err);
+  }
+  // TC02: render.maxLevel (stage 7)
+  writeText(dir + "/level.json", "{" + camera + ",\n \"render\": {\"maxLevel\": 3}}");
+  const Outcome level = run({"render", dir + "/level.json", "-o", dir + "/m.png", "--quiet"});
+  if (has("whitted")) {
+    EXPECT_EQ(0, level.code) << level.err;
+  } else {
+    EXPECT_EQ(2, level.code);
+    EXPECT_NE(std::string::npos,
+              level.err.find("render.maxLevel: the key 'maxLevel' needs stage07_reflections"))
+        << level.err;
+  }
+  // TC11: a key no stage has is an unknown key in every cut
+  writeText(dir + "/typo.json", "{" + camera + ",\n \"backgroud\": [0, 0, 0]}");
+  const Outcome typo = run({"render", dir + "/typo.json", "-o", dir + "/t.png", "--quiet"});
+  EXPECT_EQ(2, typo.code);
+  EXPECT_NE(std::string::npos, typo.err.find("backgroud: unknown key; did you mean 'background'?"))
+      << typo.err;
+}
+
+}  // namespace
+}  // namespace rt::cli
