@@ -27,7 +27,8 @@ cmake --build "$build_dir" --target rt --parallel "$RT_JOBS" >/dev/null ||
 rt="$build_dir/bin/rt"
 [[ -x "$rt" ]] || rt_die "no rt program at $rt"
 
-scenes="$("$rt" list | awk '{ print $1 }')"
+# A scene's line starts with its name; an indented line lists its parameters.
+scenes="$("$rt" list | awk '!/^ / { print $1 }')"
 linked="$(git ls-files --cached --others --exclude-standard -- '*README.md' 2>/dev/null ||
           find . -name README.md -not -path './build*')"
 names="$(xargs grep -ohE 'docs/images/[A-Za-z0-9_.-]+\.png' <<<"$linked" |

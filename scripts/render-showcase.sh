@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Renders the most advanced built-in scene into images/NAME.png.
+# Renders the course's culmination, the seed's galaxy in a glass box, into images/NAME.png.
 #
 #   scripts/render-showcase.sh [SCENE] [RT_RENDER_OPTION]...
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
 # (scripts/deps.sh), configures the release preset, builds the `rt` program and renders. Without
-# SCENE it renders the showcase scene, all-features-above, at its full resolution (or the first
-# scene `rt list` prints when that one does not exist). SCENE is a built-in name or a .json file;
+# SCENE it renders the showcase scene, galaxy (1280 x 720, diffused glass), at its full
+# resolution (or the first scene `rt list` prints when that one does not exist: a course cut). SCENE is a built-in name or a .json file;
 # the options go to `rt render` (for example --width 400 --height 300). Set RT_BUILD_DIR to
 # build somewhere other than build/release.
 set -euo pipefail
@@ -14,7 +14,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 # The most advanced scene the repository has; move it forward as the stages grow.
-SHOWCASE=all-features-above
+SHOWCASE=galaxy
 
 case "${1:-}" in
   -h | --help) rt_usage; exit 0 ;;
@@ -32,12 +32,13 @@ rt_banner "Configuring (release preset) in $build_dir"
 cmake --preset release -B "$build_dir" >/dev/null
 rt_banner "Building rt"
 if ! cmake --build "$build_dir" --target rt --parallel "$RT_JOBS"; then
-  rt_die "building rt failed (rt needs stage07_reflections: is RT_LAST_STAGE set in $build_dir?)"
+  rt_die "building rt failed (rt needs stage04_camera: is RT_LAST_STAGE set in $build_dir?)"
 fi
 rt="$build_dir/bin/rt"
 [[ -x "$rt" ]] || rt_die "the build produced no program at $rt"
 
-scenes="$("$rt" list | awk '{ print $1 }')"
+# A scene's line starts with its name; an indented line lists its parameters.
+scenes="$("$rt" list | awk '!/^ / { print $1 }')"
 [[ -n "$scenes" ]] || rt_die "'rt list' printed no scene"
 if (($#)) && [[ "$1" != -* ]]; then
   scene="$1"
