@@ -15,6 +15,13 @@ class Ray {
   Ray(const Point& head, const Vector& direction)
       : head_(head), direction_(direction.normalized()) {}
 
+  /// A ray whose direction the caller knows is already unit (a reflected, refracted or shadow
+  /// ray's, computed from unit vectors): stored as it is, without a second normalisation (a
+  /// square root and three divisions per secondary ray, saved).
+  static Ray withUnitDirection(const Point& head, const Vector& unitDirection) noexcept {
+    return Ray(head, unitDirection, Unit{});
+  }
+
   const Point& head() const { return head_; }
   const Vector& direction() const { return direction_; }
 
@@ -24,6 +31,10 @@ class Ray {
   bool operator==(const Ray& o) const { return head_ == o.head_ && direction_ == o.direction_; }
 
  private:
+  struct Unit {};
+  Ray(const Point& head, const Vector& unitDirection, Unit) noexcept
+      : head_(head), direction_(unitDirection) {}
+
   Point head_;
   Vector direction_;
 };

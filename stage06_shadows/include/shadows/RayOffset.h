@@ -80,7 +80,7 @@ class RayOffset {
 
   /// The secondary ray leaving p (on a surface of normal n) along the unit direction dir.
   Ray ray(const Point& p, const Vector& n, const Vector& dir) const noexcept {
-    return Ray(shift(p, n, dir), dir);
+    return Ray::withUnitDirection(shift(p, n, dir), dir);
   }
 
   /// The part of a shadow ray that may hold blockers, for a light at distance lightDistance from
