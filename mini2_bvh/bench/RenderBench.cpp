@@ -8,24 +8,26 @@
 //    each (default 5), so that both see the same load on a shared machine. It prints the medians
 //    of the wall time and of the rays per second (every ray: camera, reflected and refracted,
 //    shadow), the process's CPU seconds per wall second (how many cores the render really got),
-//    the speed-up (the ratio of the median wall times), and whether the two images are the same
-//    bits. Without diffusion at the seed's 1280 x 720; with it (the glass's beams of 10 x 10
-//    rays) at 256 x 144.
+//    the speed-up (the ratio of the median wall times), the rays per CPU second (the same on 1
+//    and N threads when the threads do not slow each other down), and whether the two images
+//    are the same bits. Then the load balance, which the machine's load cannot blur: every
+//    tile's cost measured alone, and the pool's schedule replayed with them (tileBalance).
+//    Without diffusion at the seed's 1280 x 720; with it (the glass's beams of 10 x 10 rays) at
+//    256 x 144.
 // 2. Stars: galaxies of n stars (GalaxyParams::stars), without diffusion, seen at 400 x 400 (the
-//    middle of the seed's view): the generation time of the scene, the build time and size of
-//    its BVH, the render time on 1 and N threads (medians of R renders, alternately), and the
-//    process's peak resident size so far (getrusage's ru_maxrss: the sizes run in increasing
-//    order, so the figure after n stars is that galaxy's peak).
+//    middle of the seed's view): the generation time of the scene and the build time and size of
+//    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
+//    and N threads (medians of R renders, alternately), and the process's peak resident size so
+//    far (getrusage's ru_maxrss: the sizes run in increasing order, so the figure after n stars
+//    is that galaxy's peak).
 // A timing is never a test: this prints figures, it asserts nothing.
 
 #include <sys/resource.h>
 
-#include <ctime>
-
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <queue>
@@ -41,10 +43,6 @@
 
 namespace rt {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 /// The CPU time of the whole process (every thread), user and system, in seconds.
 double processCpuSeconds() {
@@ -80,17 +78,17 @@ double median(std::vector<double> v) {
 /// BVH and the tracer refer to the scene.
 struct GalaxyRender {
   GalaxySetup setup;
-  double generateSeconds = 0, buildSeconds = 0;
+  double generateSeconds = 0, buildSeconds = 0;  ///< this thread's CPU time
   std::unique_ptr<Bvh> bvh;
   std::unique_ptr<BeamTracer> tracer;
 
   explicit GalaxyRender(const GalaxyParams& params) {
-    auto start = std::chrono::steady_clock::now();
+    double start = threadCpuSeconds();
     setup = galaxy(params);
-    generateSeconds = secondsSince(start);
-    start = std::chrono::steady_clock::now();
+    generateSeconds = threadCpuSeconds() - start;
+    start = threadCpuSeconds();
     bvh = std::make_unique<Bvh>(setup.scene.geometries);
-    buildSeconds = secondsSince(start);
+    buildSeconds = threadCpuSeconds() - start;
     tracer = std::make_unique<BeamTracer>(setup.scene, bvh.get());
   }
   GalaxyRender(const GalaxyRender&) = delete;
@@ -221,16 +219,17 @@ void stars(const std::vector<long>& sizes, const BenchOptions& o) {
       "\nGalaxies of n stars, no diffusion, 400 x 400, beams tracer through the BVH; render "
       "times are medians of %d, alternately on 1 and %d threads, tiles of %d\n",
       o.repeat, o.threads, o.tileSize);
-  std::printf("%9s %9s %10s %9s %8s %11s %11s %9s %11s %10s\n", "stars", "shapes", "generate s",
-              "build s", "BVH MB", "1 thread s", "threads s", "speed-up", "rays", "peak MB");
+  std::printf("%8s %8s %10s %8s %7s %10s %10s %10s %9s %9s %8s\n", "stars", "shapes", "generate s",
+              "build s", "BVH MB", "1 thr cpu", "1 thr wall", "N thr wall", "speed-up", "rays",
+              "peak MB");
   for (const long n : sizes) {
     const GalaxyRender g(GalaxyParams{.stars = n, .diffusion = false});
     const Camera camera = seedView(g.setup, 400, 400);
     const Comparison c = compareThreads(camera, *g.tracer, o);
-    std::printf("%9ld %9u %10.3f %9.3f %8.1f %11.3f %11.3f %9.2f %11llu %10.1f%s\n", n,
+    std::printf("%8ld %8u %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
                 g.setup.scene.geometries.size(), g.generateSeconds, g.buildSeconds,
-                static_cast<double>(g.bvh->memoryBytes()) / 1e6, c.wall[0], c.wall[1], c.speedUp(),
-                static_cast<unsigned long long>(c.counts[0].total()), peakMb(),
+                static_cast<double>(g.bvh->memoryBytes()) / 1e6, c.cpu[0], c.wall[0], c.wall[1],
+                c.speedUp(), static_cast<unsigned long long>(c.counts[0].total()), peakMb(),
                 c.sameImage ? "" : "  DIFFERENT IMAGES");
   }
 }
