@@ -1,6 +1,7 @@
 // mini2_bench: how fast the three Intersectables answer closest-hit queries, side by side.
 //
 //   build/release/bin/mini2_bench [--sizes 1000,10000,100000,1000000] [--no-galaxy]
+//                                 [--galaxy-stars N]
 //
 // 1. Random scenes of n spheres (uniform in a cube of side 100, radius 1.5·√(1000/n), so that a
 //    ray meets about the same number of spheres whatever n), seen by a fan of 256 × 256 rays from
@@ -9,8 +10,9 @@
 //    CBR's one box per shape) and the shapes tested per ray. The linear scan and the CBR get a
 //    subset of the fan (about 5·10^7 shape tests), and their answers are compared with the BVH's on
 //    that subset.
-// 2. The spheres of the course's "glassed galaxy" (about 1040 spheres; with the floor, then
-//    alone), with the camera and resolution of the report: the 1280 × 720 primary rays.
+// 2. The course's "glassed galaxy" (mini1's galaxy(): about 1000 stars, or N with
+//    --galaxy-stars; the whole scene, then its spheres alone), with the camera and resolution of
+//    the report: the 1280 × 720 primary rays.
 // 3. Memory for the largest random scene, measured first: the scene, the BVH, and the build's
 //    peak (the process's peak resident size, reset before the build; Linux only).
 // Single-threaded; query rates are from the fastest of several passes, in the thread's CPU time.
@@ -22,7 +24,6 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,7 @@
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
 #include "camera/Camera.h"
+#include "glossy/Galaxy.h"
 
 #include "RandomScenes.h"
 
@@ -175,66 +177,42 @@ void randomScenes(const std::vector<std::uint32_t>& sizes) {
   }
 }
 
-// ---- The spheres of the course's "glassed galaxy" (course-catalogue.md §6) ----
-// An approximation made here: the floor and the galaxy's spheres, without the pedestal, the glass
-// box and the frame (66 polygons; the glass box would end most primary rays at its face, which is
-// the easy case). Once mini1_glossy, whose galaxy() generates the whole scene at any star count,
-// lies below this stage, that generator should replace this one.
+// ---- The course's "glassed galaxy" (mini1's galaxy(), course-catalogue.md §6) ----
 
-/// With the floor, most primary rays end on it before they reach the tree; without it, every
-/// ray that does not meet a star crosses the whole galaxy.
-Geometries galaxy(bool floor) {
-  Geometries g;
-  if (floor) g.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)));
-  const Double3 centre(4, 8, 4);
-  g.add(Sphere(Point(centre), 1), Sphere(Point(centre), 1.3));  // core and halo
-  test::Random random(2024);
-  const double tilt = 20 * std::numbers::pi / 180;
-  for (int arm = 0; arm < 21; ++arm) {
-    for (int i = 0; i < 50; ++i) {
-      const double theta = 0.15 * i;
-      const double r = 1.7 * std::exp(0.25 * theta) + (random.uniform(0, 0.2) - 0.1) * (i / 8);
-      const double angle = theta + 2 * std::numbers::pi * arm / 21;
-      const Double3 flat(r * std::cos(angle), random.uniform(-0.1, 0.1), r * std::sin(angle));
-      // Tilted 20° about the x axis, then centred.
-      const Double3 p(flat.x, flat.y * std::cos(tilt) - flat.z * std::sin(tilt),
-                      flat.y * std::sin(tilt) + flat.z * std::cos(tilt));
-      double radius = 0.05;
-      if (arm % 7 == 4) {  // a sun arm
-        const double u = random.uniform(0, 1);
-        if (u >= 0.9) continue;
-        radius = u < 0.4 ? random.uniform(0.20, 0.23) : random.uniform(0.16, 0.19);
-      }
-      g.add(Sphere(Point(centre + p), radius));
-    }
-  }
-  return g;
+/// The galaxy's shapes, of about `stars` stars (0: the seed's 50 per arm): the whole scene (the
+/// floor, the pedestal, the glass box and its frame, the stars), or its spheres alone, where
+/// every ray that meets no star crosses the whole galaxy.
+Geometries galaxyShapes(const GalaxySetup& g, bool whole) {
+  if (whole) return g.scene.geometries;
+  Geometries spheres;
+  for (const Geometry& shape : g.scene.geometries.shapes())
+    if (std::holds_alternative<Sphere>(shape)) spheres.add(shape);
+  return spheres;
 }
 
-void galaxyScene(bool floor) {
-  const Geometries scene = galaxy(floor);
-  const char* name = floor ? "galaxy" : "stars";
+void galaxyScene(long stars, bool whole) {
+  const GalaxySetup g = galaxy(GalaxyParams{.stars = stars, .diffusion = false});
+  const Geometries scene = galaxyShapes(g, whole);
+  const char* name = whole ? "galaxy" : "stars";
   std::uint32_t spheres = 0;
   for (const Geometry& shape : scene.shapes()) spheres += std::holds_alternative<Sphere>(shape);
   const double buildStart = threadSeconds();
   const Bvh bvh(scene);
   std::printf("\n%s: %u shapes, %u spheres; BVH built in %.2f ms, %zu nodes\n",
-              floor ? "Galaxy spheres and the floor" : "Galaxy spheres alone", scene.size(),
+              whole ? "Galaxy, the whole scene" : "Galaxy, its spheres alone", scene.size(),
               spheres, 1e3 * (threadSeconds() - buildStart), bvh.nodes().size());
-  const Camera camera = Camera::builder()
-                            .setLocation(Point(100, 27, 22))
-                            .setDirection(Point(4, 8, 4), Vector(0, 1, 0))
-                            .setVpDistance(750)
-                            .setVpSize(384, 216)
-                            .setResolution(1280, 720)
-                            .build();
+  // The seed's camera: from (100,27,22) at (4,8,4), 1280 x 720.
+  const Camera camera = g.camera.builder().build();
+  const int nX = camera.nX(), nY = camera.nY();
   std::vector<Ray> rays;
-  rays.reserve(1280 * 720);
-  for (int i = 0; i < 720; ++i)
-    for (int j = 0; j < 1280; ++j) rays.push_back(camera.constructRay(1280, 720, j, i));
+  rays.reserve(static_cast<std::size_t>(nX) * nY);
+  for (int i = 0; i < nY; ++i)
+    for (int j = 0; j < nX; ++j) rays.push_back(camera.constructRay(nX, nY, j, i));
   std::printf("%-12s %-8s %9s %12s %10s %10s\n", "scene", "method", "rays", "rays/s", "boxes/ray",
               "tests/ray");
-  compareMethods(name, scene, bvh, rays, 16);
+  // The linear scan and the CBR on every k-th ray: about 5·10^7 shape tests.
+  const std::size_t k = std::max<std::size_t>(16, rays.size() * scene.size() / 50'000'000);
+  compareMethods(name, scene, bvh, rays, k);
 
   // The renderer's loop with a trivial shader: make the camera ray, find the closest hit, keep
   // the shape index as the "colour".
@@ -242,14 +220,14 @@ void galaxyScene(bool floor) {
   double seconds = INFINITE_DISTANCE;
   for (int pass = 0; pass < 3; ++pass) {
     const double start = threadSeconds();
-    for (int i = 0; i < 720; ++i)
-      for (int j = 0; j < 1280; ++j)
-        if (const auto hit = bvh.closestHit(camera.constructRay(1280, 720, j, i)))
+    for (int i = 0; i < nY; ++i)
+      for (int j = 0; j < nX; ++j)
+        if (const auto hit = bvh.closestHit(camera.constructRay(nX, nY, j, i)))
           sink += hit->geometry;
     seconds = std::min(seconds, threadSeconds() - start);
   }
   std::printf("%s, BVH, camera ray + closest hit + trivial shader: %.0f rays/s (sink %llu)\n", name,
-              1280 * 720 / seconds, static_cast<unsigned long long>(sink));
+              nX * nY / seconds, static_cast<unsigned long long>(sink));
 }
 
 void memory(std::uint32_t n) {
@@ -291,13 +269,17 @@ std::vector<std::uint32_t> parseSizes(const std::string& list) {
 int main(int argc, char** argv) {
   std::vector<std::uint32_t> sizes{1000, 10000, 100000, 1000000};
   bool galaxy = true;
+  long galaxyStars = 0;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--sizes") == 0 && i + 1 < argc) {
       sizes = rt::parseSizes(argv[++i]);
     } else if (std::strcmp(argv[i], "--no-galaxy") == 0) {
       galaxy = false;
+    } else if (std::strcmp(argv[i], "--galaxy-stars") == 0 && i + 1 < argc) {
+      galaxyStars = std::stol(argv[++i]);
     } else {
-      std::fprintf(stderr, "usage: %s [--sizes 1000,10000,...] [--no-galaxy]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--sizes 1000,10000,...] [--no-galaxy] [--galaxy-stars N]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -305,8 +287,8 @@ int main(int argc, char** argv) {
   if (!sizes.empty()) rt::memory(*std::max_element(sizes.begin(), sizes.end()));
   if (!sizes.empty()) rt::randomScenes(sizes);
   if (galaxy) {
-    rt::galaxyScene(true);
-    rt::galaxyScene(false);
+    rt::galaxyScene(galaxyStars, true);
+    rt::galaxyScene(galaxyStars, false);
   }
   return 0;
 }
