@@ -28,6 +28,7 @@ struct Shared {
   const TileGrid& grid;
   const std::atomic<bool>* stop;
   std::atomic<std::uint64_t>* donePixels;
+  std::atomic<std::uint64_t>* doneRays;
 
   alignas(64) std::atomic<std::uint64_t> nextTile{0};
   alignas(64) std::atomic<bool> failed{false};
@@ -62,6 +63,7 @@ void renderTiles(Shared& s, WorkerResult& result) noexcept {
       // Row by row, so that a stop (or another thread's failure) is seen within one row of the
       // tile instead of a whole tile; a row is tileSize pixels, so the check costs nothing.
       std::uint64_t tilePixels = 0;
+      const std::uint64_t raysBefore = counts.total();
       for (int y = tile.y0; y < tile.y1; ++y) {
         if (y > tile.y0 && s.shouldStop()) break;
         const PixelBlock row{tile.x0, y, tile.x1, y + 1};
@@ -70,6 +72,8 @@ void renderTiles(Shared& s, WorkerResult& result) noexcept {
       }
       pixels += tilePixels;
       if (s.donePixels != nullptr) s.donePixels->fetch_add(tilePixels, std::memory_order_relaxed);
+      if (s.doneRays != nullptr)
+        s.doneRays->fetch_add(counts.total() - raysBefore, std::memory_order_relaxed);
     }
   } catch (...) {
     {
@@ -112,7 +116,8 @@ RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const Pi
       static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(threads), grid.size()));
 
   const auto start = std::chrono::steady_clock::now();
-  Shared shared{camera, tracer, sampler, image, grid, options.stop, options.donePixels};
+  Shared shared{camera,        tracer,       sampler,          image,
+                grid,          options.stop, options.donePixels, options.doneRays};
   std::vector<WorkerResult> results(static_cast<std::size_t>(threads));
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(threads - 1));

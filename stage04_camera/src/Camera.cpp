@@ -118,18 +118,12 @@ Ray Camera::ray(double px, double py, const Sample2& lens) const noexcept {
                       lens);
 }
 
-Image& Camera::ownImage() const {
-  if (image_.nX() == 0) image_ = Image(spec_.nX, spec_.nY);
-  return image_;
-}
-
 Camera& Camera::renderImage(const std::atomic<bool>* stop) {
   if (!rayTracer_) throwMissing("Camera::renderImage", "rayTracer");
-  Image& image = ownImage();
   counts_ = {};
   for (int i = 0; i < spec_.nY; ++i) {
     if (stop != nullptr && stop->load(std::memory_order_relaxed)) throw RenderInterrupted();
-    counts_ += renderBlock(*this, *rayTracer_, *pixelSampler_, {0, i, spec_.nX, i + 1}, image);
+    counts_ += renderBlock(*this, *rayTracer_, *pixelSampler_, {0, i, spec_.nX, i + 1}, image_);
   }
   return *this;
 }
@@ -139,16 +133,15 @@ Camera& Camera::printGrid(int interval, const Color& color) {
     throw std::invalid_argument("Camera::printGrid: interval must be at least 1, got " +
                                 std::to_string(interval));
   }
-  Image& image = ownImage();
-  for (int y = 0; y < image.nY(); ++y)
-    for (int x = 0; x < image.nX(); ++x)
-      if (x % interval == 0 || y % interval == 0) image.setPixel(x, y, color);
+  for (int y = 0; y < image_.nY(); ++y)
+    for (int x = 0; x < image_.nX(); ++x)
+      if (x % interval == 0 || y % interval == 0) image_.setPixel(x, y, color);
   return *this;
 }
 
 Camera& Camera::writeToImage(const std::string& path) {
   if (!imageWriter_) throwMissing("Camera::writeToImage", "imageWriter");
-  imageWriter_->write(ownImage(), path);
+  imageWriter_->write(image_, path);
   return *this;
 }
 
@@ -337,6 +330,7 @@ Camera CameraBuilder::build() const {
   c.rayTracer_ = rayTracer_;
   c.imageWriter_ = imageWriter_;
   c.pixelSampler_ = pixelSampler_ ? pixelSampler_ : std::make_shared<CenterSampler>();
+  c.image_ = Image(spec_.nX, spec_.nY);
   return c;
 }
 

@@ -277,6 +277,18 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC23",
        {"probe", "two-color", "--width", "10", "--pixel", "10,0"},
        "rt: --pixel X: expected an integer from 0 to 9, got '10'\n"},
+      // TC25: an unknown acceleration, with a suggestion and the known ones
+      {"TC25",
+       {"render", "two-color", "--accel", "bhv"},
+       "rt: --accel: unknown acceleration 'bhv'; did you mean 'bvh'? (known: none cbr bvh)\n"},
+      // TC26: threads beyond the pool's limit
+      {"TC26",
+       {"render", "two-color", "--threads", "1025"},
+       "rt: --threads: expected an integer from 0 to 1024, got '1025'\n"},
+      // TC27: a negative thread count, for probe too (which takes the same scene options)
+      {"TC27",
+       {"probe", "two-color", "--pixel", "0,0", "--threads", "-1"},
+       "rt: --threads: expected an integer from 0 to 1024, got '-1'\n"},
   };
   for (const Case& c : cases) {
     const Outcome r = run(c.args);

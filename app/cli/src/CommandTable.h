@@ -8,6 +8,7 @@
 
 #include "cli/CommandLine.h"
 #include "cli/Commands.h"
+#include "cli/Registry.h"
 
 namespace rt::cli {
 
@@ -29,6 +30,7 @@ struct SceneArguments {
   std::optional<int> width, height;
   std::optional<std::string> tracer;
   std::optional<int> seed;
+  SettingOverrides settings;  ///< the options stages add (--threads, --accel)
 };
 
 /// Adds SCENE, --param NAME=VALUE (repeatable), --view NAME, --width W and --height H (integers,
@@ -42,5 +44,10 @@ void addSceneArguments(CLI::App& command, SceneArguments& into, const std::strin
 /// the scene's aspect ratio; both given with another aspect: the view plane's height follows,
 /// so pixels stay square); the tracer known. @throws UsageError, SceneError.
 SceneDocument sceneFromArguments(const SceneArguments& arguments);
+
+/// Refuses an nX x nY image that cannot fit in this machine's memory (render and probe check
+/// before their camera allocates it).
+/// @throws UsageError naming the size and the memory.
+void checkImageFits(int nX, int nY);
 
 }  // namespace rt::cli

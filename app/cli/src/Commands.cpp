@@ -1,5 +1,7 @@
 #include "cli/Commands.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <climits>
 #include <filesystem>
@@ -149,6 +151,22 @@ void addSceneArguments(CLI::App& command, SceneArguments& into, const std::strin
               "scene's render.seed)",
               "N")
       ->transform(integerValidator(0, INT_MAX));
+  for (const auto& add : cliRegistry().sceneOptions) add(command, into.settings);
+}
+
+// An Image keeps a Color (three doubles) per pixel, and the PNG writer an RGB byte triple.
+void checkImageFits(int nX, int nY) {
+  const double bytes = static_cast<double>(nX) * nY * (sizeof(Color) + 3);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0) return;  // unknown: let the allocation decide
+  const double memory = static_cast<double>(pages) * static_cast<double>(pageSize);
+  if (bytes > memory) {
+    std::ostringstream os;
+    os.precision(3);
+    os << "a " << nX << "x" << nY << " image needs " << bytes / (1u << 30)
+       << " GiB, more than this machine's " << memory / (1u << 30) << " GiB of memory";
+    throw UsageError(os.str());
+  }
 }
 
 SceneDocument sceneFromArguments(const SceneArguments& arguments) {
@@ -195,6 +213,8 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
                      " is outside 1.." + std::to_string(kMax) + " per side");
   if (arguments.tracer) doc.render.tracer = *arguments.tracer;
   if (arguments.seed) doc.render.seed = static_cast<std::uint64_t>(*arguments.seed);
+  if (arguments.settings.threads) doc.render.threads = *arguments.settings.threads;
+  if (arguments.settings.accel) doc.render.accel = *arguments.settings.accel;
   findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
   return doc;
 }

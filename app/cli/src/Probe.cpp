@@ -47,6 +47,7 @@ int probe(const ProbeArgs& args, const Io& io) {
   } else {
     const int nX = doc.camera.nX, nY = doc.camera.nY;
     const auto [x, y] = parseIntPair(*args.pixel, "--pixel", nX - 1, nY - 1);
+    checkImageFits(nX, nY);
     const Camera camera = doc.camera.builder().build();
     // The hits are those of the ray through the pixel's centre; the colour is the pixel's, as a
     // render computes it (every sample of the render's sampler): the same bits as in the image.

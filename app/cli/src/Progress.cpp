@@ -28,11 +28,13 @@ std::string formatDuration(double seconds) {
 }
 
 ProgressMonitor::ProgressMonitor(std::ostream& err, Style style,
-                                 const std::atomic<std::uint64_t>& done, std::uint64_t total,
+                                 const std::atomic<std::uint64_t>& done,
+                                 const std::atomic<std::uint64_t>& rays, std::uint64_t total,
                                  std::uint64_t rowLength)
     : err_(err),
       style_(style),
       done_(done),
+      rays_(rays),
       total_(total == 0 ? 1 : total),
       rowLength_(rowLength == 0 ? 1 : rowLength),
       start_(std::chrono::steady_clock::now()),
@@ -56,31 +58,48 @@ void ProgressMonitor::run() {
   while (!wake_.wait_for(lock, kPollInterval, [this] { return stopping_; })) report(false);
 }
 
+std::string ProgressMonitor::rateAndTimeLeft(std::uint64_t done) const {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  if (elapsed <= 0 || done == 0) return "";
+  // Rays of every kind per second: the figure that compares tracers, accelerations and thread
+  // counts. The time left assumes the remaining pixels cost what the finished ones did.
+  const double rays = static_cast<double>(rays_.load(std::memory_order_relaxed));
+  std::ostringstream os;
+  os << static_cast<std::uint64_t>(rays / elapsed) << " rays/s";
+  if (done < total_) {
+    const double pixelsPerSecond = static_cast<double>(done) / elapsed;
+    os << ", " << formatDuration(static_cast<double>(total_ - done) / pixelsPerSecond) << " left";
+  }
+  return os.str();
+}
+
 void ProgressMonitor::report(bool last) {
   const std::uint64_t done = std::min(done_.load(std::memory_order_relaxed), total_);
   if (style_ == Style::Lines) {
     // One line per 10% step reached; steps passed between two polls are all printed, so the
-    // log always reads 10%, 20%, ... in order.
+    // log always reads 10%, 20%, ... in order (the figures are those of the poll).
     const int decile = static_cast<int>(done * 10 / total_);
-    for (int d = lastDecile_ + 1; d <= decile; ++d) err_ << "rt: rendering " << d * 10 << "%\n";
-    if (decile > lastDecile_) err_.flush();
+    if (decile > lastDecile_) {
+      const std::string figures = rateAndTimeLeft(done);
+      for (int d = lastDecile_ + 1; d <= decile; ++d) {
+        err_ << "rt: rendering " << d * 10 << "%";
+        if (!figures.empty()) err_ << " (" << figures << ")";
+        err_ << "\n";
+      }
+      err_.flush();
+    }
     lastDecile_ = std::max(lastDecile_, decile);
     return;
   }
   const std::uint64_t rows = done / rowLength_;
   if (rows != lastRow_ || last) {
     lastRow_ = rows;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     std::ostringstream line;
     line << "\rrt: rendering " << (done * 100 / total_) << "% (" << rows << "/"
          << total_ / rowLength_ << " rows";
-    if (elapsed > 0 && done > 0) {
-      const double rate = static_cast<double>(done) / elapsed;
-      line << ", " << static_cast<std::uint64_t>(rate) << " pixels/s";
-      if (done < total_)
-        line << ", " << formatDuration(static_cast<double>(total_ - done) / rate) << " left";
-    }
+    if (const std::string figures = rateAndTimeLeft(done); !figures.empty())
+      line << ", " << figures;
     line << ")\x1b[K";  // erase what a longer previous line left
     err_ << line.str() << std::flush;
     drewLine_ = true;

@@ -1,13 +1,11 @@
-// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet]
-#include <unistd.h>
-
+// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet] and the options
+// stages add (mini project 2: --threads N, --accel A)
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <sstream>
 
 #include "CommandTable.h"
 #include "camera/Camera.h"
@@ -20,22 +18,6 @@
 namespace rt::cli {
 
 namespace {
-
-/// Refuses an image that cannot fit in memory before the camera allocates it: an Image keeps a
-/// Color (three doubles) per pixel, and the PNG writer an RGB byte triple.
-void checkImageFits(int nX, int nY) {
-  const double bytes = static_cast<double>(nX) * nY * (sizeof(Color) + 3);
-  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || pageSize <= 0) return;  // unknown: let the allocation decide
-  const double memory = static_cast<double>(pages) * static_cast<double>(pageSize);
-  if (bytes > memory) {
-    std::ostringstream os;
-    os.precision(3);
-    os << "a " << nX << "x" << nY << " image needs " << bytes / (1u << 30)
-       << " GiB, more than this machine's " << memory / (1u << 30) << " GiB of memory";
-    throw UsageError(os.str());
-  }
-}
 
 /// rt render's arguments, as the command line binds them.
 struct RenderArgs {
@@ -61,13 +43,14 @@ int render(const RenderArgs& args, const Io& io) {
       registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
   const std::unique_ptr<RayTracer> tracer = kind.make(doc, accelerator.get());
   const std::unique_ptr<PixelSampler> sampler = registry.makeSampler(doc.render);
-  const Camera camera = doc.camera.builder().setResolution(nX, nY).build();
-  Image image(nX, nY);
+  // The camera's own image is the one rendered into and written.
+  Camera camera = doc.camera.builder().build();
+  Image& image = camera.image();
 
   const bool quiet = args.quiet;
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   const auto start = std::chrono::steady_clock::now();
-  std::atomic<std::uint64_t> donePixels{0};
+  std::atomic<std::uint64_t> donePixels{0}, doneRays{0};
   RenderOutcome outcome;
   bool interrupted = false;
   {
@@ -78,13 +61,13 @@ int render(const RenderArgs& args, const Io& io) {
       progress = std::make_unique<ProgressMonitor>(
           io.err,
           io.errIsTerminal ? ProgressMonitor::Style::Terminal : ProgressMonitor::Style::Lines,
-          donePixels, total, static_cast<std::uint64_t>(nX));
+          donePixels, doneRays, total, static_cast<std::uint64_t>(nX));
     }
     // The build's render loop (rows on this thread; tiles on a pool of threads from mini project
     // 2 on): it sees a stop request (Ctrl-C) within a block of pixels, adds each block's counts
-    // once and reports its pixels to the progress thread once.
-    outcome = registry.render(
-        {camera, *tracer, *sampler, image, doc.render.threads, io.stop, donePixels});
+    // once and reports its pixels and rays to the progress thread once.
+    outcome = registry.render({camera, *tracer, *sampler, image, doc.render.threads, io.stop,
+                               donePixels, doneRays});
     // A Ctrl-C that arrives after the last block still means "stop": nothing is written.
     interrupted = outcome.interrupted || (io.stop && io.stop->load());
   }  // the progress thread is stopped here, before anything else is printed
@@ -98,15 +81,20 @@ int render(const RenderArgs& args, const Io& io) {
   PngImageWriter().write(image, output);
   const RayCounts& counts = outcome.counts;
   if (!quiet) {
-    // The rate counts primary rays (pixels), the figure that compares across tracers; the
-    // secondary and shadow rays the tracer cast are named when there are any.
-    const double rate = seconds > 0 ? static_cast<double>(counts.primary) / seconds : 0;
+    // The rate of primary rays (pixels) compares across tracers; the rays of every kind per
+    // second, named when the tracer cast secondary or shadow rays, compare the work done.
+    const auto perSecond = [seconds](std::uint64_t n) {
+      return static_cast<std::uint64_t>(seconds > 0 ? static_cast<double>(n) / seconds : 0);
+    };
     io.err << "rt: wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
            << counts.primary << " primary rays";
     if (counts.secondary > 0) io.err << " (+" << counts.secondary << " reflected/refracted)";
     if (counts.shadow > 0) io.err << " (+" << counts.shadow << " shadow)";
-    io.err << " in " << formatDuration(seconds) << " (" << static_cast<std::uint64_t>(rate)
-           << " primary rays/s)\n";
+    io.err << " in " << formatDuration(seconds);
+    if (outcome.threads > 1) io.err << " on " << outcome.threads << " threads";
+    io.err << " (" << perSecond(counts.primary) << " primary rays/s";
+    if (counts.total() > counts.primary) io.err << ", " << perSecond(counts.total()) << " rays/s";
+    io.err << ")\n";
   }
   return EXIT_OK;
 }
@@ -128,8 +116,9 @@ void addRenderCommand(CommandLine& rt) {
           tracers +
           "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
           "resolution and that the output's directory can be written to. Progress goes to\n"
-          "stderr (a percentage on a terminal, a line per 10% otherwise), then the wall\n"
-          "time and the rate of primary rays. The image is written to a temporary file and\n"
+          "stderr (a percentage on a terminal, a line per 10% otherwise, with the rays per\n"
+          "second and the time left), then the wall time, the threads and the rates of\n"
+          "primary rays and of all rays. The image is written to a temporary file and\n"
           "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
           "existing FILE.png as it was, and exits with code 130.\n",
       render);

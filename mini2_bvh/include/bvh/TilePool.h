@@ -49,6 +49,9 @@ struct RenderOptions {
   /// When given, each tile's pixels are added to it once the tile is done (once per tile, not
   /// per pixel), for a progress display reading it from another thread.
   std::atomic<std::uint64_t>* donePixels = nullptr;
+  /// When given, each tile's rays (primary, secondary and shadow) are added to it once the tile
+  /// is done, for the progress display's rays per second.
+  std::atomic<std::uint64_t>* doneRays = nullptr;
 };
 
 struct RenderResult {

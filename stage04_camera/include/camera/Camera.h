@@ -85,11 +85,10 @@ class Camera {
   ///         when the file cannot be written.
   Camera& writeToImage(const std::string& path);
 
-  /// The camera's own image (the course's renderImage and writeToImage use it), nX x nY black
-  /// pixels until rendered. Allocated when first used, so that a camera that only makes rays
-  /// (for renderBlock into an image of the caller's, or a probe) costs no image.
-  const Image& image() const { return ownImage(); }
-  Image& image() { return ownImage(); }
+  /// The camera's own image (the course's renderImage and writeToImage use it; renderBlock can
+  /// render into it too), nX x nY black pixels until rendered.
+  const Image& image() const { return image_; }
+  Image& image() { return image_; }
 
   // Transformations (the seed's stage-4 bonus). Each keeps the frame orthonormal.
   /// Moves the location by offset; the orientation is unchanged.
@@ -109,8 +108,6 @@ class Camera {
   Ray viewPlaneRay(double xRight, double yUp, const Sample2& lens) const noexcept;
   /// Sets the frame and writes it into spec_ (as to and up, no target).
   void setFrame(const Vector& vTo, const Vector& vUp, const Vector& vRight);
-  /// image_, allocated at nX x nY on the first call.
-  Image& ownImage() const;
 
   CameraSpec spec_;
   Vector vTo_ = Vector(0, 0, -1);
@@ -121,7 +118,7 @@ class Camera {
   std::shared_ptr<const RayTracer> rayTracer_;
   std::shared_ptr<const ImageWriter> imageWriter_;
   std::shared_ptr<const PixelSampler> pixelSampler_;
-  mutable Image image_;  ///< empty until ownImage() allocates it
+  Image image_;
   RayCounts counts_;
 };
 

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,6 +21,10 @@
 #include "camera/RenderBlock.h"
 #include "intersections/Intersectable.h"
 #include "scenefile/SceneDocument.h"
+
+namespace CLI {
+class App;
+}
 
 namespace rt::cli {
 
@@ -66,6 +71,13 @@ struct RenderJob {
   int threads;                             ///< 0: every core (when the build has threads)
   const std::atomic<bool>* stop;           ///< raised to stop (Ctrl-C); may be null
   std::atomic<std::uint64_t>& donePixels;  ///< pixels finished, for the progress thread
+  std::atomic<std::uint64_t>& doneRays;    ///< rays of every kind cast, for the progress thread
+};
+
+/// What the options a stage adds to render and probe set (unset: the scene's render settings).
+struct SettingOverrides {
+  std::optional<int> threads;       ///< --threads (mini project 2)
+  std::optional<std::string> accel;  ///< --accel (mini project 2)
 };
 
 struct RenderOutcome {
@@ -86,6 +98,9 @@ struct CliRegistry {
   std::function<RenderOutcome(const RenderJob&)> render;
   /// Commands a stage adds to rt (mini project 2: bench).
   std::vector<std::function<void(CommandLine&)>> commands;
+  /// Options a stage adds to render and probe (mini project 2: --threads, --accel), bound to
+  /// the overrides.
+  std::vector<std::function<void(CLI::App& command, SettingOverrides& into)>> sceneOptions;
 };
 
 /// The registry of this build: every present stage's part registered (on the first call).

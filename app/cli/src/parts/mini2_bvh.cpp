@@ -1,18 +1,46 @@
-// What rt knows of mini project 2: the acceleration structure a render asks for
-// (render.accel: none, cbr or bvh; --accel), built once over the scene's shapes before any ray.
-#include "bvh/Bvh.h"
-#include "bvh/Cbr.h"
+// What rt knows of mini project 2: the acceleration structure a render asks for (render.accel,
+// --accel: none, cbr or bvh), built once over the scene's shapes before any ray, and the render
+// on a pool of threads handing out square tiles (render.threads, --threads; 0: every core).
+#include <CLI/App.hpp>
+
+#include "bvh/Acceleration.h"
+#include "bvh/TilePool.h"
+#include "cli/CommandLine.h"
 #include "cli/Registry.h"
+#include "common/NearestName.h"
 
 namespace rt::cli {
 
 void registerCli_mini2_bvh(CliRegistry& registry) {
-  registry.makeAccelerator = [](const SceneDocument& doc) -> std::unique_ptr<Intersectable> {
-    const Geometries& shapes = doc.scene->geometries;
-    if (doc.render.accel == "bvh") return std::make_unique<Bvh>(shapes);
-    if (doc.render.accel == "cbr") return std::make_unique<Cbr>(shapes);
-    return nullptr;  // "none": the course's list
+  registry.makeAccelerator = [](const SceneDocument& doc) {
+    return makeAcceleration(doc.render.accel, doc.scene->geometries);
   };
+  registry.render = [](const RenderJob& job) {
+    RenderOptions options;
+    options.threads = job.threads;
+    options.stop = job.stop;
+    options.donePixels = &job.donePixels;
+    options.doneRays = &job.doneRays;
+    const RenderResult r = renderImage(job.camera, job.tracer, job.sampler, job.image, options);
+    return RenderOutcome{r.counts, r.interrupted, r.threads};
+  };
+  registry.sceneOptions.push_back([](CLI::App& command, SettingOverrides& into) {
+    addOptional(command, "--threads", into.threads,
+                "render threads, 0..1024; 0: one per core (default: the scene's render.threads)",
+                "N")
+        ->transform(integerValidator(0, RenderOptions::MAX_THREADS));
+    addOptional(command, "--accel", into.accel,
+                "none, cbr or bvh (default: the scene's render.accel, bvh); the image is the "
+                "same, bit for bit",
+                "A")
+        ->check([](const std::string& name) -> std::string {
+          if (isAccelerationName(name)) return "";
+          std::string known;
+          for (std::string_view n : ACCELERATION_NAMES) known += " " + std::string(n);
+          return "unknown acceleration '" + name + "'" + didYouMean(name, ACCELERATION_NAMES) +
+                 " (known:" + known + ")";
+        });
+  });
 }
 
 }  // namespace rt::cli

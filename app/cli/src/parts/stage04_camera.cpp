@@ -19,8 +19,10 @@ RenderOutcome renderRows(const RenderJob& job) {
       return outcome;
     }
     const PixelBlock row{0, y, nX, y + 1};
-    outcome.counts += renderBlock(job.camera, job.tracer, job.sampler, row, job.image);
+    const RayCounts counts = renderBlock(job.camera, job.tracer, job.sampler, row, job.image);
+    outcome.counts += counts;
     job.donePixels.fetch_add(row.pixels(), std::memory_order_relaxed);
+    job.doneRays.fetch_add(counts.total(), std::memory_order_relaxed);
   }
   return outcome;
 }

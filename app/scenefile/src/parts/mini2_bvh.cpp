@@ -1,19 +1,17 @@
 // The scene format's mini-project-2 part: the acceleration structure and the threads.
 #include "../Format.h"
+#include "bvh/Acceleration.h"
+#include "bvh/TilePool.h"
 
 namespace rt::scenefile {
-
-namespace {
-constexpr std::string_view ACCELERATIONS[] = {"none", "cbr", "bvh"};
-}  // namespace
 
 void registerFormat_mini2_bvh(SceneFormat& format) {
   using R = RenderSettings;
   format.attach<R>("render", "accel", [](const Node& n, R& r) {
-    r.accel = readChoice(n, "an acceleration", ACCELERATIONS);
+    r.accel = readChoice(n, "an acceleration", ACCELERATION_NAMES);
   });
   format.attach<R>("render", "threads",
-                   [](const Node& n, R& r) { r.threads = readInteger(n, 0, 1024); });
+                   [](const Node& n, R& r) { r.threads = readInteger(n, 0, RenderOptions::MAX_THREADS); });
   format.writeDocument.push_back([](const SceneDocument& doc, Json& j) {
     const RenderSettings d;
     Json& render = j["render"];

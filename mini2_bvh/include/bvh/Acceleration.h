@@ -1,0 +1,28 @@
+#pragma once
+/// @file Acceleration.h
+/// The acceleration structures a render can ask for by name (a scene file's render.accel, rt's
+/// --accel, the benchmarks' rows): one list, so that every place that reads a name knows the
+/// same ones.
+
+#include <array>
+#include <memory>
+#include <string_view>
+
+#include "intersections/Geometries.h"
+#include "intersections/Intersectable.h"
+
+namespace rt {
+
+/// "none": the scene's own list (the course's linear search); "cbr": a bounding box around each
+/// shape, tested before the shape; "bvh": the bounding volume hierarchy.
+inline constexpr std::array<std::string_view, 3> ACCELERATION_NAMES{"none", "cbr", "bvh"};
+
+/// True when name is one of ACCELERATION_NAMES.
+bool isAccelerationName(std::string_view name) noexcept;
+
+/// The structure name asks for, built over shapes (which must outlive it); null for "none", where
+/// the caller intersects shapes itself.
+/// @throws std::invalid_argument naming an unknown name and the known ones.
+std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes);
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+#include "bvh/Acceleration.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "bvh/Bvh.h"
+#include "bvh/Cbr.h"
+
+namespace rt {
+
+bool isAccelerationName(std::string_view name) noexcept {
+  return std::find(ACCELERATION_NAMES.begin(), ACCELERATION_NAMES.end(), name) !=
+         ACCELERATION_NAMES.end();
+}
+
+std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes) {
+  if (name == "bvh") return std::make_unique<Bvh>(shapes);
+  if (name == "cbr") return std::make_unique<Cbr>(shapes);
+  if (name == "none") return nullptr;
+  std::string known;
+  for (std::string_view n : ACCELERATION_NAMES) known += (known.empty() ? "" : ", ") + std::string(n);
+  throw std::invalid_argument("makeAcceleration: unknown acceleration '" + std::string(name) +
+                              "' (known: " + known + ")");
+}
+
+}  // namespace rt
