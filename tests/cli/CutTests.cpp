@@ -63,7 +63,7 @@ TEST(CutTests, theTracersAreThoseOfTheStagesPresent) {
   // TC03: a tracer of a stage the cut lacks is refused naming that stage; one it has is
   // accepted (the whole course has every tracer)
   const Outcome beams = run({"render", "two-color", "--tracer", "beams", "--width", "4", "-o",
-                             freshDirectory("beams") + "/x.png", "--quiet"});
+                             freshDirectory("beams") + "/x.png", "--silent"});
   if (has("beams")) {
     EXPECT_EQ(0, beams.code) << beams.err;
   } else {
@@ -96,7 +96,7 @@ TEST(CutTests, rendersAndExportsInEveryCut) {
   // TC01: the base render test with the build's default tracer: the sphere's centre is the
   // course's pink (the ambient light; from stage 5 on the shapes are black and matte, so every
   // tracer sees the same), a corner the green background
-  const Outcome r = run({"render", "two-color", "--width", "20", "-o", dir + "/a.png", "--quiet"});
+  const Outcome r = run({"render", "two-color", "--width", "20", "-o", dir + "/a.png", "--silent"});
   ASSERT_EQ(0, r.code) << r.err;
   const Rgb8Image a = readPng(dir + "/a.png");
   EXPECT_EQ(20, a.width);
@@ -107,7 +107,7 @@ TEST(CutTests, rendersAndExportsInEveryCut) {
   const Outcome e = run({"export", "two-color", "-o", dir + "/two-color.json"});
   ASSERT_EQ(0, e.code) << e.err;
   const Outcome b =
-      run({"render", dir + "/two-color.json", "--width", "20", "-o", dir + "/b.png", "--quiet"});
+      run({"render", dir + "/two-color.json", "--width", "20", "-o", dir + "/b.png", "--silent"});
   ASSERT_EQ(0, b.code) << b.err;
   std::ifstream fa(dir + "/a.png", std::ios::binary), fb(dir + "/b.png", std::ios::binary);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(fa), {}),
@@ -121,7 +121,7 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
                  "vpSize": [1, 1], "resolution": [4, 4]})";
   // TC01: lights (stage 5)
   writeText(dir + "/lights.json", "{" + camera + ",\n \"lights\": []}");
-  const Outcome lights = run({"render", dir + "/lights.json", "-o", dir + "/l.png", "--quiet"});
+  const Outcome lights = run({"render", dir + "/lights.json", "-o", dir + "/l.png", "--silent"});
   if (has("phong")) {
     EXPECT_EQ(0, lights.code) << lights.err;
   } else {
@@ -132,7 +132,7 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   }
   // TC02: render.maxLevel (stage 7)
   writeText(dir + "/level.json", "{" + camera + ",\n \"render\": {\"maxLevel\": 3}}");
-  const Outcome level = run({"render", dir + "/level.json", "-o", dir + "/m.png", "--quiet"});
+  const Outcome level = run({"render", dir + "/level.json", "-o", dir + "/m.png", "--silent"});
   if (has("whitted")) {
     EXPECT_EQ(0, level.code) << level.err;
   } else {
@@ -143,7 +143,7 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   }
   // TC11: a key no stage has is an unknown key in every cut
   writeText(dir + "/typo.json", "{" + camera + ",\n \"backgroud\": [0, 0, 0]}");
-  const Outcome typo = run({"render", dir + "/typo.json", "-o", dir + "/t.png", "--quiet"});
+  const Outcome typo = run({"render", dir + "/typo.json", "-o", dir + "/t.png", "--silent"});
   EXPECT_EQ(2, typo.code);
   EXPECT_NE(std::string::npos, typo.err.find("backgroud: unknown key; did you mean 'background'?"))
       << typo.err;

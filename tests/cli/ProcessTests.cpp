@@ -39,7 +39,7 @@ TEST(RenderProcessTests, widthAndHeightOverrideTheScenesResolution) {
   // TC01: both overridden: the PNG has that size, and the course's two-colour picture: the
   // sphere (pink) in the middle, the empty up-right quadrant (green background) in the corner
   test::RtResult r = runRt(
-      {"render", "two-color", "-o", dir + "/a.png", "--width", "40", "--height", "30", "--quiet"});
+      {"render", "two-color", "-o", dir + "/a.png", "--width", "40", "--height", "30", "--silent"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(r.err, "");
@@ -50,21 +50,21 @@ TEST(RenderProcessTests, widthAndHeightOverrideTheScenesResolution) {
   EXPECT_EQ(a.at(39, 0), (std::array<unsigned char, 3>{75, 127, 90}));
   // TC02: only the width: the height keeps the scene's aspect ratio (1000 x 1000: square), so
   // nothing is squashed (once it stayed 1000, giving an 8 x 1000 image)
-  r = runRt({"render", "two-color", "-o", dir + "/b.png", "--width", "8", "--quiet"});
+  r = runRt({"render", "two-color", "-o", dir + "/b.png", "--width", "8", "--silent"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const Rgb8Image b = readPng(dir + "/b.png");
   EXPECT_EQ(b.width, 8);
   EXPECT_EQ(b.height, 8);
   // TC03: integers in any JSON number form, as in a scene file (once "--width 4e1" was refused)
   r = runRt({"render", "two-color", "-o", dir + "/e.png", "--width", "4e1", "--height", "30.0",
-             "--quiet"});
+             "--silent"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const Rgb8Image e = readPng(dir + "/e.png");
   EXPECT_EQ(e.width, 40);
   EXPECT_EQ(e.height, 30);
   // TC11: the smallest image, 1x1
   r = runRt(
-      {"render", "two-color", "-o", dir + "/c.png", "--width", "1", "--height", "1", "--quiet"});
+      {"render", "two-color", "-o", dir + "/c.png", "--width", "1", "--height", "1", "--silent"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(readPng(dir + "/c.png").width, 1);
 }
@@ -73,7 +73,7 @@ TEST(RenderProcessTests, defaultOutputIsSceneDotPngInTheCurrentDirectory) {
   const std::string dir = freshDirectory("renderDefaultOutput");
   // TC01: without -o, NAME.png appears in the working directory
   const test::RtResult r =
-      runRt({"render", "two-color", "--width", "4", "--height", "3", "--quiet"},
+      runRt({"render", "two-color", "--width", "4", "--height", "3", "--silent"},
             {.cwd = dir, .asUnprivileged = false});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(readPng(dir + "/two-color.png").width, 4);
@@ -100,6 +100,16 @@ TEST(RenderProcessTests, progressAndTimingGoToStderr) {
                  ": 20x10, tracer ambient, 200 primary rays in [0-9.]+ s( on [2-9] threads)? "
                  "\\([0-9]+ primary rays/s\\)\n")))
       << r.err;
+  // TC03: --quiet: no header and no progress, only the final line; --silent: nothing
+  const test::RtResult quiet =
+      runRt({"render", "two-color", "-o", out, "--width", "20", "--height", "10", "--quiet"});
+  ASSERT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_TRUE(std::regex_match(quiet.err, std::regex("rt: wrote " + out + ": 20x10, [^\n]+\n")))
+      << quiet.err;
+  const test::RtResult silent =
+      runRt({"render", "two-color", "-o", out, "--width", "20", "--height", "10", "--silent"});
+  ASSERT_EQ(silent.exitCode, 0) << silent.err;
+  EXPECT_EQ(silent.err, "");
   // TC02: --tracer names the tracer in the report
   const test::RtResult phong = runRt(
       {"render", "two-color", "-o", out, "--width", "2", "--height", "2", "--tracer", "phong"});
@@ -112,7 +122,7 @@ TEST(RenderProcessTests, threadsAndAccelerationChangeNothingInTheImage) {
   // The galaxy (every kind of shape, beams, soft shadows), small: the reference is one thread
   // over the scene's own list, the course's renderer.
   const std::vector<std::string> scene{"render", "galaxy", "--width", "48", "--height", "27",
-                                       "--quiet"};
+                                       "--silent"};
   const auto renderWith = [&](const std::string& name, std::vector<std::string> options) {
     std::vector<std::string> args = scene;
     args.insert(args.end(), {"-o", dir + "/" + name + ".png"});
@@ -307,7 +317,7 @@ TEST(ExportProcessTests, renderingTheExportGivesTheSameBytes) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, readFile(json));
     // TC02: the built-in scene and its export render to identical PNG files
-    const std::vector<std::string> size{"--width", "48", "--height", "36", "--quiet"};
+    const std::vector<std::string> size{"--width", "48", "--height", "36", "--silent"};
     std::vector<std::string> a{"render", name, "-o", dir + "/" + name + "-builtin.png"};
     std::vector<std::string> b{"render", json, "-o", dir + "/" + name + "-export.png"};
     a.insert(a.end(), size.begin(), size.end());

@@ -1,5 +1,5 @@
-// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet] and the options
-// stages add (mini project 2: --threads N, --accel A)
+// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet|--silent] and the
+// options stages add (mini project 2: --threads N, --accel A)
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -23,7 +23,8 @@ namespace {
 struct RenderArgs {
   SceneArguments scene;
   std::optional<std::string> output;
-  bool quiet = false;
+  bool quiet = false;   ///< no header, no progress; the final timing line stays
+  bool silent = false;  ///< nothing but errors
 };
 
 int render(const RenderArgs& args, const Io& io) {
@@ -47,7 +48,7 @@ int render(const RenderArgs& args, const Io& io) {
   Camera camera = doc.camera.builder().build();
   Image& image = camera.image();
 
-  const bool quiet = args.quiet;
+  const bool quiet = args.quiet || args.silent;
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   const auto start = std::chrono::steady_clock::now();
   std::atomic<std::uint64_t> donePixels{0}, doneRays{0};
@@ -80,7 +81,7 @@ int render(const RenderArgs& args, const Io& io) {
   }
   PngImageWriter().write(image, output);
   const RayCounts& counts = outcome.counts;
-  if (!quiet) {
+  if (!args.silent) {
     // The rate of primary rays (pixels) compares across tracers; the rays of every kind per
     // second, named when the tracer cast secondary or shadow rays, compare the work done.
     const auto perSecond = [seconds](std::uint64_t n) {
@@ -127,7 +128,8 @@ void addRenderCommand(CommandLine& rt) {
   addSceneArguments(*command, args->scene, "image width in pixels, 1..32768 (default: the scene's)",
                     "image height in pixels, 1..32768 (default: the scene's)",
                     "which stage's tracer renders it (default: the scene's)");
-  command->add_flag("-q,--quiet", args->quiet, "print nothing but errors");
+  command->add_flag("-q,--quiet", args->quiet, "no progress; only the final timing line");
+  command->add_flag("-s,--silent", args->silent, "print nothing but errors");
 }
 
 }  // namespace rt::cli
