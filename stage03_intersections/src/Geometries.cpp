@@ -11,6 +11,7 @@ std::uint32_t Geometries::add(Geometry shape) {
 
 std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
                                           QueryCounts* counts) const noexcept {
+  // BEGIN SOLUTION: hint: Geometries::closestHit, the smallest (t, index) within tMax
   std::optional<Hit> best;
   for (std::uint32_t i = 0; i < shapes_.size(); ++i) {
     const Roots roots = intersectRoots(shapes_[i], ray);
@@ -21,10 +22,12 @@ std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
   }
   if (counts != nullptr) counts->shapeTests += shapes_.size();
   return best;
+  // END SOLUTION
 }
 
 bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                             QueryCounts* counts) const {
+  // BEGIN SOLUTION: hint: Geometries::forEachHit, visit each hit within tMax until false
   std::uint32_t tested = 0;
   bool complete = true;
   for (std::uint32_t i = 0; i < shapes_.size() && complete; ++i) {
@@ -39,10 +42,12 @@ bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
   }
   if (counts != nullptr) counts->shapeTests += tested;
   return complete;
+  // END SOLUTION
 }
 
 std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
                                                           double maxDistance) const {
+  // BEGIN SOLUTION: hint: findGeoIntersections, every hit sorted by (t, geometry index)
   std::vector<GeoPoint> points;
   forEachHit(ray, maxDistance, [&](const Hit& hit) {
     points.push_back(GeoPoint{hit.geometry, ray.point(hit.t), hit.t});
@@ -52,6 +57,7 @@ std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
     return a.t < b.t || (a.t == b.t && a.geometry < b.geometry);
   });
   return points;
+  // END SOLUTION
 }
 
 std::vector<Point> Intersectable::findIntersections(const Ray& ray, double maxDistance) const {
