@@ -40,6 +40,7 @@ BeamTracer::BeamTracer(const GlossyScene& scene, const Intersectable* accelerato
 
 Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
                                  int level, const Double3& kkx, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: BeamTracer::secondaryColor, the mean colour of the beam's rays
   const Blur& blur = blurOfRow_[from.appearanceRow];
   const BeamSettings& beam = kind == SecondaryKind::Reflected ? blur.reflected : blur.refracted;
   const bool here = beams_.beamDepth == BeamDepth::EveryBounce || level == settings_.maxLevel;
@@ -56,11 +57,13 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
         sum = sum + c.rgb();
       });
   return Color::unchecked(sum / count);
+  // END SOLUTION
 }
 
 Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t light,
                                   const LightSample& sample, const Double3& k,
                                   SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: BeamTracer::transmittance, the mean over the light's disk
   const LightSize& size = sizeOfLight_[light];
   if (!size.isArea()) return ShadowTracer::transmittance(h, light, sample, k, ctx);
   // The disk faces the shaded point: its plane is orthogonal to l (light → point).
@@ -85,6 +88,7 @@ Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t light,
                     .factor;
   }
   return sum / n;
+  // END SOLUTION
 }
 
 }  // namespace rt
