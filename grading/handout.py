@@ -47,7 +47,8 @@ EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 
 REPO = Path(__file__).resolve().parent.parent  # the checkout holding this script
 STAGE_FOLDER = re.compile(r"^(stage|mini)([0-9]+)_\w+$")  # stage03_intersections
-SOURCE_ENDINGS = (".h", ".hh", ".hpp", ".hxx", ".inl", ".ipp", ".c", ".cc", ".cpp", ".cxx")
+HEADER_ENDINGS = (".h", ".hh", ".hpp", ".hxx", ".inl", ".ipp")
+SOURCE_ENDINGS = HEADER_ENDINGS + (".c", ".cc", ".cpp", ".cxx")
 COLUMNS = 100  # the .clang-format column limit: a stub fits in it when its marker did
 
 BEGIN = re.compile(r"^(?P<indent>[ \t]*)// BEGIN SOLUTION"
@@ -64,12 +65,15 @@ ANY_INCLUDE = re.compile(r"^#include [<\"]")
 # noexcept function is what the stub means (it ends the test with the message), so that warning
 # goes too. Push/pop keep a header's lines from reaching the files that include it.
 QUIET_BEGIN = """\
-// Handout: until the bodies that throw "not implemented" below are written, their parameters and
-// helpers are unused; these lines keep the build quiet about it. Delete them with the last stub.
+// Handout: until the bodies that throw "not implemented" below are written, their parameters,
+// helpers and fields are unused; these lines keep the build quiet about it. Delete them (and the
+// pop at the end of the file) with the last stub.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-const-variable"
 #ifdef __clang__
+#pragma GCC diagnostic ignored "-Wunused-private-field"
 #pragma GCC diagnostic ignored "-Wexceptions"
 #else
 #pragma GCC diagnostic ignored "-Wterminate"
@@ -208,12 +212,18 @@ def add_stdexcept(lines: list[str]) -> list[str]:
     return lines[:anchor + 1] + ["\n", new] + gap + after
 
 
-def add_quiet(lines: list[str]) -> list[str]:
-    """lines with the diagnostic lines after the last #include (after #pragma once without one),
-    and their pop at the end."""
-    anchor = max((i for i, l in enumerate(lines) if ANY_INCLUDE.match(l) or
-                  l.startswith("#pragma once")), default=-1)
-    return lines[:anchor + 1] + ["\n", QUIET_BEGIN] + lines[anchor + 1:] + ["\n", QUIET_END]
+def add_quiet(path: str, lines: list[str]) -> list[str]:
+    """lines with the diagnostic lines, and their pop at the end. In a source file they come
+    before the first #include, since clang reports an unused private field where its class
+    declares it, in the header; in a header after its includes, to cover its own code alone."""
+    includes = [i for i, l in enumerate(lines) if ANY_INCLUDE.match(l)]
+    if path.endswith(HEADER_ENDINGS) or not includes:
+        at = (includes[-1] if includes else
+              next((i for i, l in enumerate(lines) if l.startswith("#pragma once")), -1)) + 1
+        block = ["\n", QUIET_BEGIN]
+    else:
+        at, block = includes[0], [QUIET_BEGIN, "\n"]
+    return lines[:at] + block + lines[at:] + ["\n", QUIET_END]
 
 
 def stubbed(path: str, text: str) -> tuple[str, list[Region]]:
@@ -229,7 +239,7 @@ def stubbed(path: str, text: str) -> tuple[str, list[Region]]:
         at = r.end + 1
     out += lines[at:]
     if any(r.kind == "hint" for r in regions):
-        out = add_quiet(add_stdexcept(out))
+        out = add_quiet(path, add_stdexcept(out))
     return "".join(out), regions
 
 

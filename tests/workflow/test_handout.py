@@ -19,12 +19,15 @@ REPO = HERE.parent.parent
 FIXTURE = HERE / "handout-fixture"
 
 QUIET_BEGIN = """\
-// Handout: until the bodies that throw "not implemented" below are written, their parameters and
-// helpers are unused; these lines keep the build quiet about it. Delete them with the last stub.
+// Handout: until the bodies that throw "not implemented" below are written, their parameters,
+// helpers and fields are unused; these lines keep the build quiet about it. Delete them (and the
+// pop at the end of the file) with the last stub.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-const-variable"
 #ifdef __clang__
+#pragma GCC diagnostic ignored "-Wunused-private-field"
 #pragma GCC diagnostic ignored "-Wexceptions"
 #else
 #pragma GCC diagnostic ignored "-Wterminate"
@@ -32,14 +35,15 @@ QUIET_BEGIN = """\
 """
 QUIET_END = "#pragma GCC diagnostic pop  // Handout: see the top of the file\n"
 
-# stage02_two/src/Two.cpp in the handout of stage02: <stdexcept> after the file's own header, a
-# TODO, a stub without a hint, escaped quotes, a stub on two lines to stay within 100 columns.
+# stage02_two/src/Two.cpp in the handout of stage02: the quiet lines before the includes,
+# <stdexcept> after the file's own header, a TODO, a stub without a hint, escaped quotes, a stub on
+# two lines to stay within 100 columns.
 TWO_CPP = f"""\
+{QUIET_BEGIN}
 #include "two/Two.h"
 
 #include <stdexcept>
 
-{QUIET_BEGIN}
 namespace fixture {{
 
 int checked(int x) {{
@@ -64,7 +68,7 @@ int longHint(int x) {{
 
 {QUIET_END}"""
 
-# A header: <stdexcept> among its system includes, in name order.
+# A header: <stdexcept> among its system includes, in name order; the quiet lines after them.
 TWO_H = f"""\
 #pragma once
 /// @file Two.h
@@ -197,11 +201,11 @@ class MakeHandoutTest(unittest.TestCase):
         run = make_handout("--source-dir", self.source, "--stage", "stage01", "--out", out)
         self.assert_exit(run, 0)
         self.assertEqual(self.read("stage01_one/src/One.cpp", out), f"""\
+{QUIET_BEGIN}
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-{QUIET_BEGIN}
 namespace fixture {{
 
 double twice(double x) {{
