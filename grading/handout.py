@@ -6,10 +6,10 @@ Writes the student repository for one stage: a copy of the checkout's tracked fi
   - in the stage itself every solution region becomes a stub (below);
   - in the stages below, the solutions stay and only the marker lines go;
   - everything else (tests of every stage present, CMake, scripts, scenes, docs) is copied as is,
-    except the Markdown files: a table row naming a stage folder that is left out goes, and so
-    does a block between `<!-- BEGIN NEEDS <folder> -->` and `<!-- END NEEDS -->` when that
-    folder is left out (the marker lines themselves always go). The root README.md gains a
-    section "This handout" saying which stage the student works on.
+    except the Markdown files outside the tests/ folders: a table row naming a stage folder that
+    is left out goes, and so does a block between `<!-- BEGIN NEEDS <folder> -->` and
+    `<!-- END NEEDS -->` when that folder is left out (the marker lines themselves always go).
+    The root README.md gains a section "This handout" saying which stage the student works on.
 
 Solution regions are marked in the C++ sources of a stage folder (its tests/ folder is copied as it
 is), each marker alone on its line:
@@ -421,7 +421,7 @@ def write_handout(source: Path, stage_name: str, out: Path) -> str:
                 removed += len(regions)
             if regions:
                 contents[f] = new
-        elif f.endswith(".md"):
+        elif f.endswith(".md") and "tests" not in f.split("/")[:-1]:  # not a test's data
             text = read_text(source / f)
             new = markdown(f, text, kept, all_stages)
             if f == "README.md":

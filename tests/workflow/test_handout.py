@@ -188,6 +188,20 @@ class MakeHandoutTest(unittest.TestCase):
         self.assertNotIn("NEEDS", readme)
         self.assertNotIn("\n\n\n", readme)
 
+    def test_markdown_under_a_tests_folder_is_data_and_copied_as_it_is(self):
+        # As this fixture's README is, inside the real repository's tests/workflow.
+        source = self.tmp / "with-test-data"
+        shutil.copytree(FIXTURE, source)
+        (source / "tests" / "data").mkdir(parents=True)
+        shutil.copy(source / "README.md", source / "tests" / "data" / "README.md")
+        git(source, "init", "-q")
+        git(source, "add", "-A")
+        out = self.tmp / "with-test-data-out"
+        self.assert_exit(make_handout("--source-dir", source, "--stage", "stage01", "--out", out),
+                         0)
+        self.assertNotIn("stage02_two", self.read("README.md", out))
+        self.assertEqual(self.read("tests/data/README.md", out), self.read("README.md", source))
+
     def test_a_folder_name_gives_the_same_handout_as_its_label(self):
         out = self.tmp / "by-folder"
         self.assert_exit(make_handout("--source-dir", self.source, "--stage", "stage02_two",
