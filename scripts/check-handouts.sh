@@ -10,7 +10,8 @@
 #   1. scripts/make-handout writes its student repository;
 #   2. it configures, and the test targets of its stages (<label>_tests) build;
 #   3. the stage's own tests fail, at least one of them with "not implemented" in its output;
-#   4. every stage below passes, and no solution marker is left in any stage folder.
+#   4. every stage below passes, so do the workflow tests (they need no stage), and no solution
+#      marker is left in any stage folder.
 # It prints the time of each step and a table at the end; exit 1 when a stage fails its check.
 #
 # Built as Debug at -O0 without debug information (the fastest to compile; no sanitizers), only
@@ -194,6 +195,14 @@ for stage in "${wanted[@]}"; do
   start="$(rt_now)"
   own_failed="?"
   check_labels "$dir" "$stage" handout || continue
+  # The course workflow's own tests (the grader, make-handout, documented ctest lines) need no
+  # stage: they pass in every handout.
+  read -r passed total <<<"$(run_label "$dir" workflow)"
+  if [[ -z "$total" || "$passed" != "$total" ]]; then
+    fail "$stage" "the workflow tests fail in the handout" "$dir/ctest-workflow.log"
+    continue
+  fi
+  printf '  %-8s %4d/%-4d passed\n' workflow "$passed" "$total"
   tested="$(rt_elapsed "$start")"
   leaks="$(grep -rlE --exclude-dir=tests '(BEGIN|END) SOLUTION' "$dir"/stage* "$dir"/mini* \
              2>/dev/null || true)"
