@@ -38,6 +38,7 @@ BeamTracer::BeamTracer(const LitScene& scene, const Intersectable* accelerator,
 
 Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
                                  int level, const Double3& kkx, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: BeamTracer::secondaryColor, the mean colour of the beam's rays
   const Material& m = from.appearance->material;
   const BeamSettings& beam = kind == SecondaryKind::Reflected ? m.reflectedBeam : m.refractedBeam;
   const bool here = beams_.beamDepth == BeamDepth::EveryBounce || level == settings_.maxLevel;
@@ -54,11 +55,13 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
         sum = sum + c.rgb();
       });
   return Color::unchecked(sum / count);
+  // END SOLUTION
 }
 
 Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t lightIndex,
                                   const LightSample& sample, const Double3& k,
                                   SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: BeamTracer::transmittance, the mean over the light's disk
   const LightDisk& light = disks_[lightIndex];
   if (!light.isArea()) return ShadowTracer::transmittance(h, lightIndex, sample, k, ctx);
   // The disk faces the shaded point: its plane is orthogonal to l (light → point).
@@ -83,6 +86,7 @@ Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t lightIndex,
                     .factor;
   }
   return sum / n;
+  // END SOLUTION
 }
 
 }  // namespace rt

@@ -41,6 +41,7 @@ JitteredSampler::JitteredSampler(int grid, int lensSamples, std::uint64_t seed)
 
 Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
                                   RayCounts& counts) const {
+  // BEGIN SOLUTION: hint: JitteredSampler, the mean of N x N jittered cells x lens samples
   const bool lens = camera.aperture() > 0;
   const int n = grid_, lensCount = lens ? lensSamples_ : 1;
   Double3 sum;
@@ -68,6 +69,7 @@ Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
     }
   }
   return Color::unchecked(sum / (n * n * lensCount));
+  // END SOLUTION
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -115,6 +117,7 @@ AdaptiveSampler::AdaptiveSampler(double threshold, int depthLimit, std::uint64_t
 }
 
 Double3 AdaptiveSampler::refine(Lattice& lattice, const Square& sq) const {
+  // BEGIN SOLUTION: hint: AdaptiveSampler::refine, the corners' mean or 4 refined quarters'
   const int a = sq.a, b = sq.b, s = sq.side;
   const Double3 c00 = lattice.at(a, b), c10 = lattice.at(a + s, b), c01 = lattice.at(a, b + s),
                 c11 = lattice.at(a + s, b + s);
@@ -128,13 +131,16 @@ Double3 AdaptiveSampler::refine(Lattice& lattice, const Square& sq) const {
   return (refine(lattice, {a, b, h}) + refine(lattice, {a + h, b, h}) +
           refine(lattice, {a, b + h, h}) + refine(lattice, {a + h, b + h, h})) /
          4;
+  // END SOLUTION
 }
 
 Color AdaptiveSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
                                   RayCounts& counts) const {
+  // BEGIN SOLUTION: hint: AdaptiveSampler, refine the whole pixel on its lattice
   const int steps = 1 << depthLimit_;
   Lattice lattice{*this, camera, tracer, x, y, steps, counts};
   return Color::unchecked(refine(lattice, {0, 0, steps}));
+  // END SOLUTION
 }
 
 // ---------------------------------------------------------------------------------------------

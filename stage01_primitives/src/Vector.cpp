@@ -22,36 +22,51 @@ const Vector Vector::AXIS_Z{0, 0, 1};
 Vector::Vector(double x, double y, double z) : Vector(Double3(x, y, z)) {}
 
 Vector::Vector(const Double3& xyz) : xyz_(xyz) {
+  // BEGIN SOLUTION: todo: Vector(xyz): throw std::invalid_argument when every component isZero
   if (xyz_.isZero()) throwZero("Vector constructor: " + xyz.str());
+  // END SOLUTION
 }
 
 Vector Vector::operator+(const Vector& o) const {
+  // BEGIN SOLUTION: hint: Vector + Vector; a zero sum (v + (-v)) throws std::invalid_argument
   const Double3 r = xyz_ + o.xyz_;
   if (r.isZero()) throwZero("Vector addition: " + xyz_.str() + " + " + o.xyz_.str());
   return Vector(r, Unchecked{});
+  // END SOLUTION
 }
 
 Vector Vector::operator-(const Vector& o) const {
+  // BEGIN SOLUTION: hint: Vector - Vector; a zero difference (v - v) throws std::invalid_argument
   const Double3 r = xyz_ - o.xyz_;
   if (r.isZero()) throwZero("Vector subtraction: " + xyz_.str() + " - " + o.xyz_.str());
   return Vector(r, Unchecked{});
+  // END SOLUTION
 }
 
 Vector Vector::operator*(double s) const {
+  // BEGIN SOLUTION: hint: Vector * number; a factor that isZero throws std::invalid_argument
   const Double3 r = xyz_ * s;
   if (r.isZero()) throwZero("Vector scaling: " + xyz_.str() + " * " + formatNumber(s));
   return Vector(r, Unchecked{});
+  // END SOLUTION
 }
 
 Vector Vector::cross(const Vector& o) const {
+  // BEGIN SOLUTION: hint: Vector::cross (right-handed); parallel operands throw
   const Double3 r = xyz_.cross(o.xyz_);
   if (r.isZero()) throwZero("Vector cross product: " + xyz_.str() + " x " + o.xyz_.str());
   return Vector(r, Unchecked{});
+  // END SOLUTION
 }
 
-double Vector::length() const { return std::sqrt(lengthSquared()); }
+double Vector::length() const {
+  // BEGIN SOLUTION: hint: Vector::length, the square root of lengthSquared()
+  return std::sqrt(lengthSquared());
+  // END SOLUTION
+}
 
 Vector Vector::normalized() const noexcept {
+  // BEGIN SOLUTION: hint: Vector::normalized; mind |v|^2 overflowing or underflowing
   const double l2 = lengthSquared();
   if (l2 >= std::numeric_limits<double>::min() && l2 < std::numeric_limits<double>::infinity())
     return Vector(xyz_ / std::sqrt(l2), Unchecked{});
@@ -61,6 +76,7 @@ Vector Vector::normalized() const noexcept {
   // (or NaN).
   const Double3 scaled = xyz_ / std::max({std::abs(xyz_.x), std::abs(xyz_.y), std::abs(xyz_.z)});
   return Vector(scaled / std::sqrt(scaled.lengthSquared()), Unchecked{});
+  // END SOLUTION
 }
 
 std::ostream& operator<<(std::ostream& os, const Vector& v) { return os << v.xyz(); }

@@ -8,6 +8,7 @@ namespace rt {
 
 namespace {
 Vector normalOf(const Point& p1, const Point& p2, const Point& p3) {
+  // BEGIN SOLUTION: hint: normalOf, normalize((p2-p1) x (p3-p1)); collinear points throw
   // (p2 - p1) x (p3 - p1) is zero exactly when two points coincide or all three are collinear.
   const Double3 n = (p2.xyz() - p1.xyz()).cross(p3.xyz() - p1.xyz());
   if (n.isZero()) {
@@ -21,6 +22,7 @@ Vector normalOf(const Point& p1, const Point& p2, const Point& p3) {
                                 " overflows (coordinates too large)");
   }
   return Vector(n).normalized();
+  // END SOLUTION
 }
 }  // namespace
 

@@ -33,6 +33,7 @@ double magnitude(const Double3& p) noexcept {
 /// glancing ray relaunched from it would otherwise find the plane again at a tiny t that the
 /// course's fixed 2^-40 threshold does not catch.
 double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: planeT, t = n.(q - P0) / n.dir; NaN when parallel or starting on it
   const double nd = alignZero(n.dot(ray.direction().xyz()));
   if (nd == 0) return NAN;
   const Double3& p0 = ray.head().xyz();
@@ -41,12 +42,14 @@ double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
       8 * std::numeric_limits<double>::epsilon() * std::max(magnitude(q), magnitude(p0));
   if (std::abs(numerator) <= roundoff) return NAN;
   return numerator / nd;
+  // END SOLUTION
 }
 
 /// The course's inside test for a convex polygon hit by the ray: with vi = Pi - P0 and
 /// ni = vi x v(i+1), the ray passes inside iff dir·ni has the same sign for every edge. A zero
 /// (the course's alignZero of dir·normalize(ni)) means the ray meets an edge or a vertex: a miss.
 bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: passesInside, the signs of dir.(vi x v(i+1)) agree; 0 is a miss
   const Double3& p0 = ray.head().xyz();
   const Double3& dir = ray.direction().xyz();
   const std::size_t n = vertices.size();
@@ -64,21 +67,25 @@ bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
     vi = vNext;
   }
   return true;
+  // END SOLUTION
 }
 
 /// The two roots of a·t² + b·t + c = 0 in the cancellation-free form, or none when the
 /// discriminant is not positive (a tangent ray does not intersect, as for the course's sphere).
 void addQuadraticRoots(double a, double b, double c, Roots& roots) noexcept {
+  // BEGIN SOLUTION: hint: addQuadraticRoots, a t^2 + b t + c = 0 without cancellation
   const double disc = b * b - 4 * a * c;
   if (alignZero(disc) <= 0) return;
   const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   roots.add(q / a);
   if (q != 0) roots.add(c / q);
+  // END SOLUTION
 }
 
 }  // namespace
 
 Roots intersectSphereRoots(const Double3& centre, double r, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: intersectSphereRoots, tm -/+ th; from the centre t = r
   // u = O - P0, tm = dir·u, d² = |u|² - tm²; th = √(r² - d²); t = tm ∓ th.
   Roots roots;
   const Double3 u = centre - ray.head().xyz();
@@ -93,6 +100,7 @@ Roots intersectSphereRoots(const Double3& centre, double r, const Ray& ray) noex
   roots.add(tm - th);
   roots.add(tm + th);
   return roots;
+  // END SOLUTION
 }
 
 Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
@@ -100,18 +108,22 @@ Roots intersectRoots(const Sphere& s, const Ray& ray) noexcept {
 }
 
 Roots intersectRoots(const Plane& p, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: intersectRoots(Plane), the root from planeT
   Roots roots;
   roots.add(planeT(p.point().xyz(), p.normal().xyz(), ray));
   return roots;
+  // END SOLUTION
 }
 
 namespace {
 /// A flat convex shape (triangle or polygon): its plane's root, kept when the ray passes inside.
 Roots flatRoots(const Plane& plane, std::span<const Point> vertices, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: flatRoots, the plane's root when the ray passesInside
   Roots roots;
   const double tHit = planeT(plane.point().xyz(), plane.normal().xyz(), ray);
   if (alignZero(tHit) > 0 && passesInside(vertices, ray)) roots.add(tHit);
   return roots;
+  // END SOLUTION
 }
 }  // namespace
 
@@ -127,6 +139,7 @@ namespace {
 /// Roots of the infinite tube: |(P(t) - Pa)⊥|² = r², where ⊥ removes the axis component.
 /// Parallel rays (no component across the axis) have none.
 void addTubeRoots(const Tube& tube, const Ray& ray, Roots& roots) noexcept {
+  // BEGIN SOLUTION: hint: addTubeRoots, |(P(t) - Pa) across the axis|^2 = r^2
   const Double3& va = tube.axis().direction().xyz();
   const Double3& v = ray.direction().xyz();
   const Double3 dp = ray.head().xyz() - tube.axis().head().xyz();
@@ -136,6 +149,7 @@ void addTubeRoots(const Tube& tube, const Ray& ray, Roots& roots) noexcept {
   if (isZero(a)) return;
   const double r = tube.radius();
   addQuadraticRoots(a, 2 * vPerp.dot(dpPerp), dpPerp.lengthSquared() - r * r, roots);
+  // END SOLUTION
 }
 }  // namespace
 
@@ -146,6 +160,7 @@ Roots intersectRoots(const Tube& t, const Ray& ray) noexcept {
 }
 
 Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept {
+  // BEGIN SOLUTION: hint: intersectRoots(Cylinder), the side between the bases, the caps
   // The side: tube roots whose axial coordinate lies strictly between the bases. The caps: the
   // base planes' roots inside the base disc, the rim included when the ray crosses the solid
   // there (so a rim point is found once, and its normal is the base's, as Cylinder::normal
@@ -176,6 +191,7 @@ Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept {
     roots.add(t);
   }
   return roots;
+  // END SOLUTION
 }
 
 Roots intersectRoots(const Geometry& g, const Ray& ray) noexcept {

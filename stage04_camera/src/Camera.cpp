@@ -44,6 +44,7 @@ void requireNonNegative(double v, const char* operation, const char* argument) {
 /// component of up orthogonal to vTo, normalised.
 Frame aimedFrame(const Point& p0, const Point& target, const Vector& up, const char* operation,
                  const char* upName) {
+  // BEGIN SOLUTION: hint: aimedFrame, the look-at frame; target == p0 or a parallel up throw
   if (target == p0) {
     throw std::invalid_argument(std::string(operation) + ": target " + target.xyz().str() +
                                 " is the camera location, so there is no direction to it");
@@ -57,6 +58,7 @@ Frame aimedFrame(const Point& p0, const Point& target, const Vector& up, const c
   }
   const Vector vRight = Vector(right).normalized();
   return {vTo, vRight.cross(vTo).normalized(), vRight};
+  // END SOLUTION
 }
 
 /// cos and sin of an angle in degrees, exact for multiples of 90 degrees so that quarter turns
@@ -84,6 +86,7 @@ void cosSinDegrees(double degrees, double& c, double& s) {
 Camera::Builder Camera::builder() { return Builder{}; }
 
 Ray Camera::viewPlaneRay(double xRight, double yUp, const Sample2& lens) const noexcept {
+  // BEGIN SOLUTION: hint: viewPlaneRay, Pij = pC + x*vRight + y*vUp; a lens aims at focus
   // Pij = pC + xJ·vRight + yI·vUp with pC = p0 + d·vTo. The sum is taken on plain triples, so a
   // zero xJ or yI needs no special case. Pij − p0 is never zero: build() checked that the view
   // plane's centre differs from p0, and Pij − p0 has the component d along vTo.
@@ -99,9 +102,11 @@ Ray Camera::viewPlaneRay(double xRight, double yUp, const Sample2& lens) const n
   const Double3 origin =
       p0 + vRight_.xyz() * (spec_.aperture * lens.u) + vUp_.xyz() * (spec_.aperture * lens.v);
   return Ray(Point(origin), Vector::unchecked(focus - origin));
+  // END SOLUTION
 }
 
 Ray Camera::constructRay(int nX, int nY, int j, int i) const {
+  // BEGIN SOLUTION: hint: constructRay, the ray through the centre of pixel (j, i)
   if (nX < 1 || nY < 1) {
     throw std::invalid_argument("Camera::constructRay: the resolution must be at least 1x1, got " +
                                 std::to_string(nX) + "x" + std::to_string(nY));
@@ -109,16 +114,20 @@ Ray Camera::constructRay(int nX, int nY, int j, int i) const {
   // xJ = (j - (nX-1)/2)·rx and yI = -(i - (nY-1)/2)·ry (rows grow downwards, vUp upwards).
   return viewPlaneRay((j - (nX - 1) / 2.0) * (spec_.vpWidth / nX),
                       -(i - (nY - 1) / 2.0) * (spec_.vpHeight / nY), Sample2{});
+  // END SOLUTION
 }
 
 Ray Camera::ray(double px, double py, const Sample2& lens) const noexcept {
+  // BEGIN SOLUTION: hint: Camera::ray, constructRay's formula in continuous pixel units
   // The same formula in continuous pixel units: for px = j + 0.5, px − nX/2 = j − (nX−1)/2
   // exactly (both are small multiples of 1/2), so a pixel's centre gives constructRay's ray.
   return viewPlaneRay((px - spec_.nX / 2.0) * pixelWidth_, -(py - spec_.nY / 2.0) * pixelHeight_,
                       lens);
+  // END SOLUTION
 }
 
 Camera& Camera::renderImage(const std::atomic<bool>* stop) {
+  // BEGIN SOLUTION: hint: renderImage, every row through renderBlock; mind the stop flag
   if (!rayTracer_) throwMissing("Camera::renderImage", "rayTracer");
   counts_ = {};
   for (int i = 0; i < spec_.nY; ++i) {
@@ -126,9 +135,11 @@ Camera& Camera::renderImage(const std::atomic<bool>* stop) {
     counts_ += renderBlock(*this, *rayTracer_, *pixelSampler_, {0, i, spec_.nX, i + 1}, image_);
   }
   return *this;
+  // END SOLUTION
 }
 
 Camera& Camera::printGrid(int interval, const Color& color) {
+  // BEGIN SOLUTION: hint: printGrid, a line every interval pixels; interval < 1 throws
   if (interval < 1) {
     throw std::invalid_argument("Camera::printGrid: interval must be at least 1, got " +
                                 std::to_string(interval));
@@ -137,12 +148,15 @@ Camera& Camera::printGrid(int interval, const Color& color) {
     for (int x = 0; x < image_.nX(); ++x)
       if (x % interval == 0 || y % interval == 0) image_.setPixel(x, y, color);
   return *this;
+  // END SOLUTION
 }
 
 Camera& Camera::writeToImage(const std::string& path) {
+  // BEGIN SOLUTION: hint: writeToImage, through the image writer (missing: throw)
   if (!imageWriter_) throwMissing("Camera::writeToImage", "imageWriter");
   imageWriter_->write(image_, path);
   return *this;
+  // END SOLUTION
 }
 
 void Camera::setFrame(const Vector& vTo, const Vector& vUp, const Vector& vRight) {
@@ -161,6 +175,7 @@ Camera& Camera::move(const Vector& offset) {
 }
 
 Camera& Camera::rotate(double angleDegrees) {
+  // BEGIN SOLUTION: hint: rotate vUp and vRight around vTo (Rodrigues' formula)
   if (!std::isfinite(angleDegrees)) {
     throw std::invalid_argument("Camera::rotate: angleDegrees must be finite, got " +
                                 formatNumber(angleDegrees));
@@ -177,13 +192,16 @@ Camera& Camera::rotate(double angleDegrees) {
   const Double3 right = vRight_.xyz() * c + vUp_.xyz() * s;
   setFrame(vTo_, Vector(up).normalized(), Vector(right).normalized());
   return *this;
+  // END SOLUTION
 }
 
 Camera& Camera::lookAt(const Point& target) {
+  // BEGIN SOLUTION: hint: lookAt, the look-at frame from the location and the current vUp
   requireFinite(target.xyz(), "Camera::lookAt", "target");
   const Frame f = aimedFrame(spec_.location, target, vUp_, "Camera::lookAt", "the camera's vUp");
   setFrame(f.vTo, f.vUp, f.vRight);
   return *this;
+  // END SOLUTION
 }
 
 // ----------------------------------------------------------------------------------------------
@@ -211,6 +229,7 @@ CameraBuilder& CameraBuilder::setLocation(const Point& p0) {
 }
 
 CameraBuilder& CameraBuilder::setDirection(const Vector& vTo, const Vector& vUp) {
+  // BEGIN SOLUTION: hint: setDirection(vTo, vUp); they must be orthogonal (isZero of the dot)
   constexpr const char* OP = "Camera::Builder::setDirection";
   requireFinite(vTo.xyz(), OP, "vTo");
   requireFinite(vUp.xyz(), OP, "vUp");
@@ -225,6 +244,7 @@ CameraBuilder& CameraBuilder::setDirection(const Vector& vTo, const Vector& vUp)
   spec_.up = up;
   spec_.target.reset();
   return *this;
+  // END SOLUTION
 }
 
 CameraBuilder& CameraBuilder::setDirection(const Point& target, const Vector& up) {
@@ -286,6 +306,7 @@ CameraBuilder& CameraBuilder::setPixelSampler(std::shared_ptr<const PixelSampler
 }
 
 Camera CameraBuilder::build() const {
+  // BEGIN SOLUTION: hint: build(), check the data (missing: throw), then the frame and image
   constexpr const char* OP = "Camera::Builder";
   if (!hasLocation_) throwMissing(OP, "location");
   if (!spec_.to && !spec_.target) throwMissing(OP, "direction");
@@ -332,6 +353,7 @@ Camera CameraBuilder::build() const {
   c.pixelSampler_ = pixelSampler_ ? pixelSampler_ : std::make_shared<CenterSampler>();
   c.image_ = Image(spec_.nX, spec_.nY);
   return c;
+  // END SOLUTION
 }
 
 }  // namespace rt

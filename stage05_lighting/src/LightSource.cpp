@@ -16,6 +16,7 @@ namespace {
 /// The point light's part, shared by the spot light: l = normalize(p - position),
 /// I = I0 / (kC + kL·d + kQ·d²). nullopt when p is the light's position (l undefined there).
 std::optional<LightSample> pointSample(const PointLight& light, const Point& p) noexcept {
+  // BEGIN SOLUTION: hint: pointSample, I0 / (kC + kL d + kQ d^2), l = normalize(p - position)
   const Double3 toPoint = p.xyz() - light.position.xyz();
   // The same test the Vector constructor makes: the direction below is never the zero vector.
   if (toPoint.isZero()) return std::nullopt;
@@ -27,6 +28,7 @@ std::optional<LightSample> pointSample(const PointLight& light, const Point& p) 
   // toPoint / d has length 1.
   return LightSample{light.intensity.scaledUnchecked(1.0 / attenuation),
                      Vector::unchecked(toPoint / d), d};
+  // END SOLUTION
 }
 
 [[noreturn]] void fail(const char* light, const char* field, const std::string& requirement,
@@ -55,6 +57,7 @@ void validateAttenuation(const char* name, const PointLight& light) {
 }  // namespace
 
 std::optional<LightSample> illuminate(const LightSource& light, const Point& p) noexcept {
+  // BEGIN SOLUTION: hint: illuminate, per light type; a spot adds max(0, dir.l)^narrowBeam
   return std::visit(
       Overloaded{
           [](const DirectionalLight& l) -> std::optional<LightSample> {
@@ -73,6 +76,7 @@ std::optional<LightSample> illuminate(const LightSource& light, const Point& p) 
           },
       },
       light);
+  // END SOLUTION
 }
 
 void validate(const LightSource& light) {

@@ -41,6 +41,7 @@ PhongTracer::PhongTracer(const LitScene& scene, const Intersectable* accelerator
 }
 
 Color PhongTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: PhongTracer::traceRay, background on a miss, else Ia*kA + local
   const std::optional<Hit> hit =
       intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries);
   if (!hit) return litScene_.background;
@@ -48,14 +49,17 @@ Color PhongTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
   // recursion level).
   return litScene_.ambientLight.intensity() +
          localEffects(makeContext(*hit, ray), Double3::ONE, ctx);
+  // END SOLUTION
 }
 
 PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray) const noexcept {
+  // BEGIN SOLUTION: hint: makeContext, the hit's point, normal, v, n.v and appearance row
   const Point p = ray.point(hit.t);
   const Vector& v = ray.direction();
   const Vector n = hitNormal(litScene_.geometries[hit.geometry], p, -v);
   const std::uint32_t row = litScene_.appearanceIndex[hit.geometry];
   return HitContext{hit.geometry, p, n, v, alignZero(n.dot(v)), row, &litScene_.appearances[row]};
+  // END SOLUTION
 }
 
 /*
@@ -72,6 +76,7 @@ PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray)
  * (n·v == 0) sees the emission only.
  */
 Color PhongTracer::localEffects(const HitContext& h, const Double3& k, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: localEffects, emission + the Phong terms of each light (above)
   Color color = h.appearance->emission;
   const double nv = h.nv;
   if (nv == 0) return color;
@@ -104,6 +109,7 @@ Color PhongTracer::localEffects(const HitContext& h, const Double3& k, SampleCon
     color += sample->intensity.scaledUnchecked(transmitted).scaledUnchecked(factor);
   }
   return color;
+  // END SOLUTION
 }
 
 Double3 PhongTracer::transmittance(const HitContext&, std::uint32_t, const LightSample&,

@@ -30,6 +30,7 @@ ShadowQuery::ShadowQuery(const Intersectable& shapes, const LitScene& scene, dou
 
 Transmittance ShadowQuery::operator()(const Ray& ray, double tMin, double tMax,
                                       const Double3& weight, QueryCounts* counts) const noexcept {
+  // BEGIN SOLUTION: hint: ShadowQuery, the blockers' kT product in [tMin, tMax], canonical order
   Transmittance result;
   if (!(tMax >= tMin)) return result;  // an empty range (light closer than 2ε): nothing between
 
@@ -76,10 +77,12 @@ Transmittance ShadowQuery::operator()(const Ray& ray, double tMin, double tMax,
   if (result.factor.lowerThan(cutOff_) || (result.factor * weight).lowerThan(cutOff_))
     result.factor = Double3::ZERO;
   return result;
+  // END SOLUTION
 }
 
 Double3 ShadowQuery::canonicalProduct(const Ray& ray, double tMin, double tMax,
                                       QueryCounts* counts) const noexcept {
+  // BEGIN SOLUTION: hint: canonicalProduct, the kT product in (geometry, t) order, walk by walk
   // Each walk finds the smallest crossing after the previous one (and how many crossings share
   // it exactly); its kT joins the product. One walk per distinct crossing, then one that finds
   // none.
@@ -111,6 +114,7 @@ Double3 ShadowQuery::canonicalProduct(const Ray& ray, double tMin, double tMax,
     last = next;
     started = true;
   }
+  // END SOLUTION
 }
 
 }  // namespace rt

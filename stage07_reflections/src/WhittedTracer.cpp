@@ -27,6 +27,7 @@ WhittedTracer::WhittedTracer(const LitScene& scene, const Intersectable* acceler
 }
 
 Color WhittedTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: WhittedTracer::traceRay, Ia*kA once, then calcColor from the top
   const std::optional<Hit> hit =
       intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries);
   if (!hit) return litScene_.background;
@@ -34,12 +35,15 @@ Color WhittedTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
   // level with the initial weight (1,1,1).
   return litScene_.ambientLight.intensity() +
          calcColor(makeContext(*hit, ray), settings_.maxLevel, Double3::ONE, ctx);
+  // END SOLUTION
 }
 
 Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k,
                                SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: calcColor, the local effects, plus the global ones above level 1
   const Color local = localEffects(h, k, ctx);
   return level == 1 ? local : local + globalEffects(h, level, k, ctx);
+  // END SOLUTION
 }
 
 /*
@@ -59,6 +63,7 @@ Color WhittedTracer::calcColor(const HitContext& h, int level, const Double3& k,
  */
 Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3& k,
                                    SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: globalEffects, the refracted (kT) and reflected (kR) rays (above)
   const Material& m = h.appearance->material;
   constexpr SecondaryKind REFRACTED = SecondaryKind::Refracted;
   constexpr SecondaryKind REFLECTED = SecondaryKind::Reflected;
@@ -74,11 +79,13 @@ Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3
           : Color::BLACK;
   return refracted +
          secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR + m.kT * r, ctx);
+  // END SOLUTION
 }
 
 Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, SecondaryKind kind,
                                      int level, const Double3& k, const Double3& kx,
                                      SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: secondaryEffect, black below minK, else the offset ray's colour*kx
   const Double3 kkx = k * kx;
   // The course's cut-off (all three channels below minK); a zero weight is never cast, also
   // when minK is 0.
@@ -88,10 +95,12 @@ Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, Sec
   // kx is a product of validated, non-negative coefficients: no check per ray.
   return secondaryColor(h, offset_.ray(h.point, h.normal, dir), kind, level, kkx, ctx)
       .scaledUnchecked(kx);
+  // END SOLUTION
 }
 
 Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, SecondaryKind,
                                     int level, const Double3& kkx, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: secondaryColor, a counted ray: the background or calcColor(level-1)
   ++ctx.counts.secondary;
   const std::optional<Hit> hit =
       intersector_.closestHit(secondary, INFINITE_DISTANCE, &ctx.counts.queries);
@@ -99,6 +108,7 @@ Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, Sec
   // returned it unweighted).
   if (!hit) return litScene_.background;
   return calcColor(makeContext(*hit, secondary), level - 1, kkx, ctx);
+  // END SOLUTION
 }
 
 }  // namespace rt

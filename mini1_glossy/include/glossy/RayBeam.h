@@ -55,6 +55,7 @@ int beamCellCount(int grid) noexcept;
 template <typename Visit>
 int forEachBeamRay(const Vector& main, const Vector& n, const BeamSettings& settings,
                    RandomStream& random, Visit&& visit) {
+  // BEGIN SOLUTION: hint: forEachBeamRay, kept cells, jittered, on the right side
   if (!settings.isBeam()) {
     visit(main);
     return 1;
@@ -87,6 +88,7 @@ int forEachBeamRay(const Vector& main, const Vector& n, const BeamSettings& sett
     return 1;
   }
   return count;
+  // END SOLUTION
 }
 
 }  // namespace rt

@@ -1,0 +1,7 @@
+namespace fixture {
+int three() {
+  // BEGIN SOLUTION: hint: three
+  return 3;
+  // END SOLUTION
+}
+}  // namespace fixture

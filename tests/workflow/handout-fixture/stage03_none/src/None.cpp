@@ -1,0 +1,3 @@
+namespace fixture {
+int none() { return 0; }
+}  // namespace fixture

@@ -1,0 +1,314 @@
+#!/usr/bin/env python3
+"""scripts/make-handout on the fixture of tests/workflow/handout-fixture: the exact text that
+replaces each kind of solution region, the stages below without their markers, the stages above
+left out, the README's table and NEEDS blocks, tracked files only, and the refusals (exit 2). It
+compiles nothing: scripts/check-handouts.sh builds the real handouts. Run by ctest as
+workflow.handout, or alone: python3 tests/workflow/test_handout.py
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent
+FIXTURE = HERE / "handout-fixture"
+
+QUIET_BEGIN = """\
+// Handout: until the bodies that throw "not implemented" below are written, their parameters,
+// helpers and fields are unused; these lines keep the build quiet about it. Delete them (and the
+// pop at the end of the file) with the last stub.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-const-variable"
+#ifdef __clang__
+#pragma GCC diagnostic ignored "-Wunused-private-field"
+#pragma GCC diagnostic ignored "-Wexceptions"
+#else
+#pragma GCC diagnostic ignored "-Wterminate"
+#endif
+"""
+QUIET_END = "#pragma GCC diagnostic pop  // Handout: see the top of the file\n"
+
+# stage02_two/src/Two.cpp in the handout of stage02: the quiet lines before the includes,
+# <stdexcept> after the file's own header, a TODO, a stub without a hint, escaped quotes, a stub on
+# two lines to stay within 100 columns.
+TWO_CPP = f"""\
+{QUIET_BEGIN}
+#include "two/Two.h"
+
+#include <stdexcept>
+
+namespace fixture {{
+
+int checked(int x) {{
+  // TODO: checked, throw std::invalid_argument for a negative x
+  return x;
+}}
+
+int plain(int x) noexcept {{
+  throw std::logic_error("not implemented: see stage02_two/src/Two.cpp");
+}}
+
+int quoted(int x) {{
+  throw std::logic_error("not implemented: quoted, a \\"quote\\" and a \\\\backslash");
+}}
+
+int longHint(int x) {{
+  throw std::logic_error(
+      "not implemented: longHint, a hint long enough to need a second line for the stub");
+}}
+
+}}  // namespace fixture
+
+{QUIET_END}"""
+
+# A header: <stdexcept> among its system includes, in name order; the quiet lines after them.
+TWO_H = f"""\
+#pragma once
+/// @file Two.h
+
+#include <stdexcept>
+#include <vector>
+
+{QUIET_BEGIN}
+namespace fixture {{
+
+template <typename F>
+int countIf(const std::vector<int>& values, F&& keep) {{
+  throw std::logic_error("not implemented: countIf, the values keep accepts");
+}}
+
+}}  // namespace fixture
+
+{QUIET_END}"""
+
+# A stage below: its solutions without the markers; a one-statement body on one line again.
+ONE_CPP = """\
+#include <cmath>
+#include <string>
+
+namespace fixture {
+
+double twice(double x) { return 2 * x; }
+
+double root(double x) {
+  if (x < 0) return 0;
+  return std::sqrt(x);
+}
+
+}  // namespace fixture
+"""
+
+
+def make_handout(*args: object) -> subprocess.CompletedProcess:
+    return subprocess.run(["bash", str(REPO / "scripts" / "make-handout"), "--no-deps",
+                           *map(str, args)], capture_output=True, text=True, check=False)
+
+
+def git(cwd: Path, *args: str) -> None:
+    subprocess.run(["git", *args], cwd=cwd, check=True, capture_output=True)
+
+
+@unittest.skipUnless(shutil.which("git"), "make-handout copies the tracked files: it needs git")
+class MakeHandoutTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls) -> None:
+        cls.tmp = Path(tempfile.mkdtemp(prefix="handout-test-"))
+        cls.source = cls.tmp / "source"
+        shutil.copytree(FIXTURE, cls.source, symlinks=True)
+        git(cls.source, "init", "-q")
+        git(cls.source, "add", "-A")
+        # Neither an untracked file nor an ignored build tree goes into a handout.
+        (cls.source / "untracked.txt").write_text("not tracked\n", encoding="utf-8")
+        (cls.source / "build").mkdir()
+        (cls.source / "build" / "object.o").write_text("built\n", encoding="utf-8")
+        cls.out = cls.tmp / "stage02"
+        cls.run2 = make_handout("--source-dir", cls.source, "--stage", "stage02", "--out", cls.out)
+
+    @classmethod
+    def tearDownClass(cls) -> None:
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def read(self, relative: str, root: Path | None = None) -> str:
+        return ((root or self.out) / relative).read_text(encoding="utf-8")
+
+    def assert_exit(self, run: subprocess.CompletedProcess, code: int) -> None:
+        self.assertEqual(run.returncode, code, f"stdout:\n{run.stdout}\nstderr:\n{run.stderr}")
+
+    def assert_refused(self, run: subprocess.CompletedProcess, message: str) -> None:
+        self.assert_exit(run, 2)
+        self.assertIn(message, run.stderr)
+
+    # ---- The handout of stage02 ----
+
+    def test_writes_the_tracked_files_of_the_stages_up_to_the_one_handed_out(self):
+        self.assert_exit(self.run2, 0)
+        files = sorted(str(p.relative_to(self.out)) for p in self.out.rglob("*") if p.is_file())
+        self.assertEqual(files, [
+            ".gitignore", "CMakeLists.txt", "README.md", "scripts/tool.sh",
+            "stage01_one/CMakeLists.txt", "stage01_one/src/One.cpp",
+            "stage02_two/CMakeLists.txt", "stage02_two/README.md", "stage02_two/include/two/Two.h",
+            "stage02_two/src/Two.cpp", "stage02_two/tests/TwoTests.cpp"])
+        self.assertTrue(os.access(self.out / "scripts" / "tool.sh", os.X_OK))
+        self.assertIn("stage02_two: 5 solution region(s) replaced (4 throw, 1 TODO)",
+                      self.run2.stdout)
+        self.assertIn("left out: stage03_none, mini1_three", self.run2.stdout)
+
+    def test_replaces_each_region_of_the_stage_by_its_stub(self):
+        self.assertEqual(self.read("stage02_two/src/Two.cpp"), TWO_CPP)
+        self.assertEqual(self.read("stage02_two/include/two/Two.h"), TWO_H)
+
+    def test_keeps_the_solutions_of_the_stages_below_without_their_markers(self):
+        self.assertEqual(self.read("stage01_one/src/One.cpp"), ONE_CPP)
+
+    def test_copies_the_tests_as_they_are(self):
+        self.assertEqual(self.read("stage02_two/tests/TwoTests.cpp"),
+                         self.read("stage02_two/tests/TwoTests.cpp", self.source))
+
+    def test_the_readme_says_which_stage_and_drops_what_is_left_out(self):
+        readme = self.read("README.md")
+        self.assertIn("## This handout: `stage02_two`\n", readme)
+        self.assertIn("the course cut after [`stage02_two`](stage02_two/README.md), the stage you "
+                      "work\non now. The stage below it, `stage01_one`, is complete: build on it.",
+                      readme)
+        self.assertIn("scripts/test-all.sh -L stage02 ", readme)
+        self.assertIn("ctest --preset release -L stage02 ", readme)
+        self.assertLess(readme.index("## This handout"), readme.index("## The stages"))
+        self.assertIn("| [`stage02_two`](stage02_two/README.md) | two |\n", readme)
+        self.assertNotIn("stage03_none", readme)
+        self.assertNotIn("mini1_three", readme)
+        self.assertNotIn("## The mini project", readme)
+        self.assertIn("\n\n## Always\n\nWith stage01_one, which every handout has.\n", readme)
+        self.assertNotIn("NEEDS", readme)
+        self.assertNotIn("\n\n\n", readme)
+
+    def test_markdown_under_a_tests_folder_is_data_and_copied_as_it_is(self):
+        # As this fixture's README is, inside the real repository's tests/workflow.
+        source = self.tmp / "with-test-data"
+        shutil.copytree(FIXTURE, source)
+        (source / "tests" / "data").mkdir(parents=True)
+        shutil.copy(source / "README.md", source / "tests" / "data" / "README.md")
+        git(source, "init", "-q")
+        git(source, "add", "-A")
+        out = self.tmp / "with-test-data-out"
+        self.assert_exit(make_handout("--source-dir", source, "--stage", "stage01", "--out", out),
+                         0)
+        self.assertNotIn("stage02_two", self.read("README.md", out))
+        self.assertEqual(self.read("tests/data/README.md", out), self.read("README.md", source))
+
+    def test_a_folder_name_gives_the_same_handout_as_its_label(self):
+        out = self.tmp / "by-folder"
+        self.assert_exit(make_handout("--source-dir", self.source, "--stage", "stage02_two",
+                                      "--out", out), 0)
+        for f in ("stage02_two/src/Two.cpp", "README.md", "stage01_one/src/One.cpp"):
+            self.assertEqual(self.read(f, out), self.read(f))
+
+    def test_the_first_stage_has_nothing_below_and_an_existing_empty_directory_is_fine(self):
+        out = self.tmp / "empty"
+        out.mkdir()
+        run = make_handout("--source-dir", self.source, "--stage", "stage01", "--out", out)
+        self.assert_exit(run, 0)
+        self.assertEqual(self.read("stage01_one/src/One.cpp", out), f"""\
+{QUIET_BEGIN}
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace fixture {{
+
+double twice(double x) {{
+  throw std::logic_error("not implemented: twice, 2x");
+}}
+
+double root(double x) {{
+  throw std::logic_error("not implemented: root, the square root");
+}}
+
+}}  // namespace fixture
+
+{QUIET_END}""")
+        self.assertFalse((out / "stage02_two").exists())
+        readme = " ".join(self.read("README.md", out).split())
+        self.assertIn("It is the first stage: it builds on the standard library alone.", readme)
+        self.assertIn('they fail until every body is written: ```sh', readme)
+
+    def test_list_shows_the_regions(self):
+        run = make_handout("--source-dir", self.source, "--list", "--stage", "stage02")
+        self.assert_exit(run, 0)
+        self.assertEqual(run.stdout, """\
+stage02_two (stage02): 5 region(s)
+  stage02_two/include/two/Two.h:10  hint: countIf, the values keep accepts
+  stage02_two/src/Two.cpp:6  todo: checked, throw std::invalid_argument for a negative x
+  stage02_two/src/Two.cpp:13  hint: see stage02_two/src/Two.cpp
+  stage02_two/src/Two.cpp:19  hint: quoted, a "quote" and a \\backslash
+  stage02_two/src/Two.cpp:25  hint: longHint, a hint long enough to need a second line for the stub
+""")
+
+    # ---- Refusals: exit 2, a message, nothing written ----
+
+    def test_refuses_a_directory_that_is_not_empty(self):
+        self.assert_refused(make_handout("--source-dir", self.source, "--stage", "stage02",
+                                         "--out", self.out),
+                            f"the output directory {self.out} exists and is not empty")
+
+    def test_refuses_an_unknown_stage(self):
+        out = self.tmp / "unknown"
+        self.assert_refused(
+            make_handout("--source-dir", self.source, "--stage", "stage09", "--out", out),
+            "unknown stage 'stage09': this checkout has stage01_one, stage02_two, stage03_none, "
+            "mini1_three")
+        self.assertFalse(out.exists())
+
+    def test_refuses_a_directory_inside_the_repository(self):
+        out = self.source / "build" / "handout"
+        self.assert_refused(
+            make_handout("--source-dir", self.source, "--stage", "stage02", "--out", out),
+            "lies inside the repository")
+        self.assertFalse(out.exists())
+
+    def test_refuses_a_stage_without_solution_regions(self):
+        self.assert_refused(make_handout("--source-dir", self.source, "--stage", "stage03",
+                                         "--out", self.tmp / "none"),
+                            "stage03_none has no solution region")
+
+    def test_refuses_a_source_that_is_not_a_git_checkout(self):
+        plain = self.tmp / "plain"
+        shutil.copytree(FIXTURE, plain)
+        self.assert_refused(make_handout("--source-dir", plain, "--stage", "stage02",
+                                         "--out", self.tmp / "plain-out"),
+                            "is not a git checkout")
+
+    def test_refuses_malformed_markers_naming_file_and_line(self):
+        cases = {
+            "unclosed": ("  // BEGIN SOLUTION: hint: x\n  return 1;\n",
+                         "Bad.cpp:2: BEGIN SOLUTION is never closed"),
+            "nested": ("  // BEGIN SOLUTION\n  // BEGIN SOLUTION\n  // END SOLUTION\n",
+                       "Bad.cpp:3: BEGIN SOLUTION inside the region opened on line 2"),
+            "stray end": ("  // END SOLUTION\n", "Bad.cpp:2: END SOLUTION without a BEGIN"),
+            "code after": ("  return 1;  // BEGIN SOLUTION\n", "Bad.cpp:2: malformed marker"),
+            "unknown kind": ("  // BEGIN SOLUTION: note: x\n  // END SOLUTION\n",
+                             "Bad.cpp:2: malformed marker"),
+        }
+        for name, (body, message) in cases.items():
+            with self.subTest(name):
+                source = self.tmp / f"bad-{name.replace(' ', '-')}"
+                shutil.copytree(FIXTURE, source)
+                (source / "stage01_one" / "src" / "Bad.cpp").write_text(
+                    "int bad() {\n" + body + "}\n", encoding="utf-8")
+                git(source, "init", "-q")
+                git(source, "add", "-A")
+                out = self.tmp / f"bad-out-{name.replace(' ', '-')}"
+                # A stage below is read too: its markers must be right to be removed.
+                self.assert_refused(make_handout("--source-dir", source, "--stage", "stage02",
+                                                 "--out", out), f"stage01_one/src/{message}")
+                self.assertFalse(out.exists())
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
