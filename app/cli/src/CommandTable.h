@@ -16,6 +16,7 @@ void addListCommand(CommandLine& rt);
 void addRenderCommand(CommandLine& rt);
 void addProbeCommand(CommandLine& rt);
 void addExportCommand(CommandLine& rt);
+void addCompareCommand(CommandLine& rt);
 
 struct BuiltinScene;
 /// The built-in scene called name. @throws UsageError "unknown scene 'x'; did you mean 'y'?

@@ -34,7 +34,8 @@ const char* const kFooter =
     "  rt render two-color -o two-color.png --width 400 --height 400\n"
     "  rt render my-scene.json --tracer shadow\n"
     "  rt probe two-color --pixel 500,500\n"
-    "  rt export two-color -o two-color.json\n\n"
+    "  rt export two-color -o two-color.json\n"
+    "  rt compare mine.png docs/images/two-color.png\n\n"
     "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).\n";
 
 int list(const Io& io) {
@@ -58,6 +59,7 @@ CommandLine makeCommandLine() {
   addRenderCommand(rt);
   addProbeCommand(rt);
   addExportCommand(rt);
+  addCompareCommand(rt);
   for (const auto& add : cliRegistry().commands) add(rt);
   return rt;
 }
