@@ -51,4 +51,10 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments);
 /// @throws UsageError naming the size and the memory.
 void checkImageFits(int nX, int nY);
 
+/// Prints "rt: warning: ..." on io.err for each warning the scene file's reader left in
+/// doc.warnings (stage 7: glass faces wound both ways) and, when rendering, for a render by the
+/// ambient tracer of a scene whose ambient light is zero (every shape would be black).
+void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, bool rendering,
+                    const Io& io);
+
 }  // namespace rt::cli

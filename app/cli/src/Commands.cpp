@@ -221,4 +221,25 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
   return doc;
 }
 
+void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, bool rendering,
+                    const Io& io) {
+  for (const std::string& w : doc.warnings) io.err << "rt: warning: " << w << "\n";
+  const Scene& scene = *doc.scene;
+  const Double3& ambient = scene.ambientLight.intensity().rgb();
+  if (!rendering || doc.render.tracer != "ambient" || scene.geometries.size() == 0 ||
+      !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
+    return;
+  std::string others;
+  for (const TracerKind& t : tracerKinds())
+    if (t.name != "ambient") others += (others.empty() ? "" : ", ") + t.name;
+  io.err << "rt: warning: the ambient tracer ("
+         << (arguments.tracer ? "--tracer ambient" : "the scene's render.tracer")
+         << ") shows the ambient light wherever a ray hits a shape, and this scene's ambient "
+            "light is zero (ambient.color x ambient.kA): every shape will be black; give the "
+            "scene an ambient light"
+         << (others.empty() ? ""
+                            : ", or render with a tracer that shows its lights (" + others + ")")
+         << "\n";
+}
+
 }  // namespace rt::cli
