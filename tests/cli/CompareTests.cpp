@@ -6,10 +6,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "InProcess.h"
 #include "camera/ImageWriter.h"
 #include "cli/Commands.h"
 #include "cli/Compare.h"
@@ -19,22 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = runRt(args, Io{out, err});
-  return {code, out.str(), err.str()};
-}
+using test::Outcome;
+using test::run;
 
 std::string freshDirectory(const std::string& name) {
-  const fs::path dir = fs::path("cli-test-output") / ("compare-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
+  return test::freshTestDirectory("compare-" + name);
 }
 
 /// A nX x nY image of one colour, (100, 150, 200), with the pixels of `changed` set apart.

@@ -5,10 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "InProcess.h"
 #include "cli/Commands.h"
 #include "scenefile/SceneFile.h"
 
@@ -17,22 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = runRt(args, Io{out, err});
-  return {code, out.str(), err.str()};
-}
+using test::Outcome;
+using test::run;
 
 std::string freshDirectory(const std::string& name) {
-  const fs::path dir = fs::path("cli-test-output") / ("warnings-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
+  return test::freshTestDirectory("warnings-" + name);
 }
 
 std::string writeText(const std::string& path, const std::string& text) {

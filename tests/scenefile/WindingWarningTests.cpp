@@ -94,9 +94,25 @@ std::vector<Face> octahedron() {
   return faces;
 }
 
-const std::string TAIL =
-    " (an edge shared by two faces runs the same way in both); refraction needs outward normals: "
-    "reverse the order of the vertices of ";
+/// The warning about a closed glass shape of n faces, at the line of geometry `first`:
+/// "GEOMETRIES point inwards, those of ... outwards" is `normals`, `those` what to reverse.
+std::string closedShapeWarning(int first, int n, const std::string& normals,
+                               const std::string& those) {
+  return "glass.json:" + std::to_string(5 + first) + ":5: geometries[" + std::to_string(first) +
+         "]: mixed winding in a closed glass shape of " + std::to_string(n) +
+         " faces (material 'glass', ior 1.5): " + normals +
+         " (an edge shared by two faces runs the same way in both); refraction needs outward "
+         "normals: reverse the order of the vertices of " +
+         those;
+}
+
+/// The warning about an open surface of two faces, the second wound against the first.
+std::string openSurfaceWarning(const std::string& material) {
+  return "glass.json:6:5: geometries[1]: mixed winding in a glass surface of 2 faces (" + material +
+         "): geometries[1] is wound against geometries[0] (an edge shared by two faces runs the "
+         "same way in both); refraction needs outward normals: reverse the order of the "
+         "vertices of one side";
+}
 
 TEST(WindingWarningTest, closedShapes) {
   // ============ Equivalence Partitions Tests ==============
@@ -106,23 +122,21 @@ TEST(WindingWarningTest, closedShapes) {
   std::vector<Face> faces = cube();
   faces[1] = reversed(faces[1]);
   EXPECT_EQ(warningsOf(faces),
-            std::vector<std::string>{
-                "glass.json:6:5: geometries[1]: mixed winding in a closed glass shape of 6 faces "
-                "(material 'glass', ior 1.5): the normal of geometries[1] ('top') points inwards, "
-                "those of geometries[0] ('bottom'), geometries[2], geometries[3], geometries[4], "
-                "geometries[5] outwards" +
-                TAIL + "that face"});
+            std::vector<std::string>{closedShapeWarning(
+                1, 6,
+                "the normal of geometries[1] ('top') points inwards, those of geometries[0] "
+                "('bottom'), geometries[2], geometries[3], geometries[4], geometries[5] outwards",
+                "that face")});
   // TC03: four of its faces reversed: the two left outwards are the ones to keep (the volume
   // decides, not the count)
   faces = cube();
   for (int i : {0, 1, 2, 3}) faces[i] = reversed(faces[i]);
   EXPECT_EQ(warningsOf(faces),
-            std::vector<std::string>{
-                "glass.json:5:5: geometries[0]: mixed winding in a closed glass shape of 6 faces "
-                "(material 'glass', ior 1.5): the normals of geometries[0] ('bottom'), "
-                "geometries[1] ('top'), geometries[2], geometries[3] point inwards, those of "
-                "geometries[4], geometries[5] outwards" +
-                TAIL + "those faces"});
+            std::vector<std::string>{closedShapeWarning(
+                0, 6,
+                "the normals of geometries[0] ('bottom'), geometries[1] ('top'), geometries[2], "
+                "geometries[3] point inwards, those of geometries[4], geometries[5] outwards",
+                "those faces")});
   // TC04: every face wound inwards: consistent, so no warning (only mixed winding is reported)
   faces = cube();
   for (Face& f : faces) f = reversed(f);
@@ -134,12 +148,12 @@ TEST(WindingWarningTest, closedShapes) {
   // =============== Boundary Values Tests ==================
   // TC11: seven faces to list: six, then "and 1 more"
   EXPECT_EQ(warningsOf(faces),
-            std::vector<std::string>{
-                "glass.json:8:5: geometries[3]: mixed winding in a closed glass shape of 8 faces "
-                "(material 'glass', ior 1.5): the normal of geometries[3] points inwards, those of "
-                "geometries[0], geometries[1], geometries[2], geometries[4], geometries[5], "
-                "geometries[6] and 1 more outwards" +
-                TAIL + "that face"});
+            std::vector<std::string>{closedShapeWarning(
+                3, 8,
+                "the normal of geometries[3] points inwards, those of geometries[0], "
+                "geometries[1], geometries[2], geometries[4], geometries[5], geometries[6] and 1 "
+                "more outwards",
+                "that face")});
 }
 
 TEST(WindingWarningTest, openSurfacesAndOtherMaterials) {
@@ -151,18 +165,12 @@ TEST(WindingWarningTest, openSurfacesAndOtherMaterials) {
   EXPECT_EQ(warningsOf({lower, upper}), std::vector<std::string>{});
   // TC02: wound both ways: an open surface, the second face named against the first
   EXPECT_EQ(warningsOf({lower, reversed(upper)}),
-            std::vector<std::string>{
-                "glass.json:6:5: geometries[1]: mixed winding in a glass surface of 2 faces "
-                "(material 'glass', ior 1.5): geometries[1] is wound against geometries[0]" +
-                TAIL + "one side"});
+            std::vector<std::string>{openSurfaceWarning("material 'glass', ior 1.5")});
   // TC03: an inline material is said so
   Face a = lower, b = reversed(upper);
   a.material = b.material = R"({"kT": 0.5, "ior": 1.33})";
   EXPECT_EQ(warningsOf({a, b}),
-            std::vector<std::string>{
-                "glass.json:6:5: geometries[1]: mixed winding in a glass surface of 2 faces (an "
-                "inline material, ior 1.33): geometries[1] is wound against geometries[0]" +
-                TAIL + "one side"});
+            std::vector<std::string>{openSurfaceWarning("an inline material, ior 1.33")});
   // TC04: no refraction: ior 1 (the course's straight-through glass), or no transparency
   std::vector<Face> faces = cube();
   faces[1] = reversed(faces[1]);
