@@ -22,8 +22,8 @@ The timing file, as `rt bench --json` writes it:
              "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
              "nodesPerRay": Y, "speedup": Z, "seedSeconds": null or a number}]}
 
---root is the repository (default: this script's); the page's links and images are relative to
-the output file, so the page works opened as a file or served over HTTP from the repository.
+--root is the repository (default: this script's); the page's links, images and style sheet
+(docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
 python3 comes with scripts/deps.sh python3.
 """
 from __future__ import annotations
@@ -39,6 +39,7 @@ import sys
 from pathlib import Path
 
 PROGRAM = "make-gallery"
+STYLESHEET = Path(__file__).resolve().parent.parent / "docs" / "gallery.css"
 STAGE_FOLDER = re.compile(r"^(stage|mini)(\d+)_[A-Za-z0-9_]+$")
 IMAGE_LINK = re.compile(r"docs/images/([A-Za-z0-9_.-]+\.png)")
 GALAXY = [("galaxy.png", "with diffused glass", "the seed's final image"),
@@ -238,28 +239,6 @@ def timing_table(bench: dict) -> str:
 
 # ---- The page ----------------------------------------------------------------------------------
 
-STYLE = """
-body { font: 15px/1.45 system-ui, sans-serif; margin: 2em auto; max-width: 1100px;
-       padding: 0 1em; color: #222; }
-h1 { margin-bottom: 0.2em; }
-section.stage { border-top: 1px solid #ddd; padding: 0.6em 0; }
-section.stage h3 { margin: 0.2em 0; }
-.images { display: flex; flex-wrap: wrap; gap: 12px; }
-figure { margin: 0; width: 240px; }
-figure img { display: block; background: #000; }
-figcaption { font-size: 13px; color: #555; }
-.note { color: #8a5a00; }
-svg.chart text { font: 13px system-ui, sans-serif; fill: #222; }
-svg.chart text.title { font-weight: bold; }
-svg.chart rect.bar { fill: #3b6ea8; }
-svg.chart rect.seed { fill: none; stroke: #c0392b; stroke-width: 1.5; }
-table { border-collapse: collapse; font-size: 13px; margin-top: 1em; }
-th, td { border: 1px solid #ccc; padding: 2px 6px; text-align: right; }
-th:first-child, td:first-child { text-align: left; }
-td { white-space: nowrap; }
-"""
-
-
 def stage_folders(root: Path) -> list[Path]:
     """stageNN_* then miniN_*, each by number: the course's order."""
     found = [p for p in root.iterdir() if p.is_dir() and STAGE_FOLDER.match(p.name)]
@@ -338,10 +317,11 @@ def page(root: Path, bench_path: Path, page_dir: Path) -> str:
         missing(f"{where} (the timing: rt bench --json > docs/bench.json)")
         body.append('<p class="note">No timing yet: <code>rt bench --json &gt; docs/bench.json'
                     "</code>, then run <code>scripts/make-gallery.py</code> again.</p>")
+    style = Path(os.path.relpath(STYLESHEET, page_dir)).as_posix()
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
             "<title>A staged ray tracer: the gallery</title>\n"
-            f"<style>{STYLE}</style>\n</head>\n<body>\n" + "\n".join(body) +
-            "\n</body>\n</html>\n")
+            f'<link rel="stylesheet" href="{html.escape(style)}">\n</head>\n<body>\n' +
+            "\n".join(body) + "\n</body>\n</html>\n")
 
 
 def main(argv: list[str]) -> int:

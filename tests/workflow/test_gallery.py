@@ -209,6 +209,7 @@ CHECK_SCRIPT = """<script>
 window.addEventListener("load", () => {
   for (const img of document.images) img.setAttribute("data-natural-width", img.naturalWidth);
   document.body.setAttribute("data-images-checked", document.images.length);
+  document.body.setAttribute("data-max-width", getComputedStyle(document.body).maxWidth);
 });
 </script>
 """
@@ -234,7 +235,7 @@ def image_load_failures(browser: str, tmp: Path, page: Path) -> list[str]:
     """Opens a copy of page, written to tmp with <base href> at the page's directory (so that
     its relative links resolve where the page lives) and a script that marks every image with
     its naturalWidth once the page has loaded; returns a line for each image that did not load
-    (and one when the script did not run)."""
+    (and one when the script did not run, or the style sheet was not applied)."""
     text = page.read_text(encoding="utf-8")
     text = text.replace("<head>", f'<head>\n<base href="{page.parent.as_uri()}/">', 1)
     check = tmp / f"check-{len(list(tmp.glob('check-*')))}.html"
@@ -248,6 +249,8 @@ def image_load_failures(browser: str, tmp: Path, page: Path) -> list[str]:
         return ["the check script did not run (no data-images-checked in the DOM)"]
     failures = [] if int(checked.group(1)) == expected else \
         [f"{checked.group(1)} images in the DOM, {expected} in the page"]
+    if 'data-max-width="1100px"' not in r.stdout:  # docs/gallery.css's body { max-width }
+        failures.append("the style sheet docs/gallery.css was not applied")
     for tag in re.findall(r"<img\b[^>]*>", r.stdout):
         width = re.search(r'data-natural-width="(\d+)"', tag)
         if not width or int(width.group(1)) == 0:
