@@ -226,7 +226,8 @@ void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, b
   for (const std::string& w : doc.warnings) io.err << "rt: warning: " << w << "\n";
   const Scene& scene = *doc.scene;
   const Double3& ambient = scene.ambientLight.intensity().rgb();
-  if (!rendering || doc.render.tracer != "ambient" || scene.geometries.size() == 0 ||
+  const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
+  if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
       !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
     return;
   std::string others;
