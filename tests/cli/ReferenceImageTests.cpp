@@ -44,7 +44,7 @@ TEST_P(ReferenceImageTest, aFreshRenderIsTheCommittedImage) {
   const std::string mine = (dir / (name + ".png")).string();
   std::ostringstream out, err;
   // TC02: rendered as documented, it compares exactly (exit 0: every channel equal)
-  const std::vector<std::string> render{"render", name, "--width", "500", "-o", mine, "--quiet"};
+  const std::vector<std::string> render{"render", name, "--width", "500", "-o", mine, "--silent"};
   ASSERT_EQ(runRt(render, Io{out, err}), EXIT_OK) << err.str();
   const std::vector<std::string> compare{"compare", mine, reference};
   EXPECT_EQ(runRt(compare, Io{out, err}), EXIT_OK)
