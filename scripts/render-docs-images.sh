@@ -11,7 +11,7 @@
 #
 # The cli tests (ReferenceImageTests) render every one the same way and compare. Options given
 # replace --width 500 (the committed images are rendered without any). The mini projects' images
-# (the galaxy, sampled and minutes long) are made by the commands their READMEs give, not here.
+# (the galaxy: sampled, and long to render) are made by the commands their READMEs give.
 # A README link to an image of docs/images/ that does not exist is reported. --list prints what
 # would be rendered and renders nothing. Set RT_BUILD_DIR to build somewhere other than
 # build/release.

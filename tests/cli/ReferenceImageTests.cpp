@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 /// The built-in scenes of the course's stages (stage04_camera ... stage07_reflections) in this
-/// build; the mini projects' (the galaxy) are sampled renders that take minutes, not references.
+/// build; the mini projects' (the galaxy) are sampled and long to render: not references here.
 std::vector<std::string> courseScenes() {
   std::vector<std::string> names;
   for (const BuiltinScene& s : builtinScenes())
