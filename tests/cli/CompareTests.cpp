@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -17,14 +16,8 @@
 namespace rt::cli {
 namespace {
 
-namespace fs = std::filesystem;
-
 using test::Outcome;
 using test::run;
-
-std::string freshDirectory(const std::string& name) {
-  return test::freshTestDirectory("compare-" + name);
-}
 
 /// A nX x nY image of one colour, (100, 150, 200), with the pixels of `changed` set apart.
 struct Changed {
@@ -46,13 +39,13 @@ struct Pair {
   std::string dir, a, b;
 };
 Pair onePixelOffByThree(const std::string& name) {
-  const std::string dir = freshDirectory(name);
+  const std::string dir = test::freshTestDirectory("compare-" + name);
   return {dir, writeImage(dir + "/a.png", 10, 10),
           writeImage(dir + "/b.png", 10, 10, {{2, 1, Color(103, 150, 200)}})};
 }
 
 TEST(CompareTests, identicalImages) {
-  const std::string dir = freshDirectory("identical");
+  const std::string dir = test::freshTestDirectory("compare-identical");
   const std::string a = writeImage(dir + "/a.png", 10, 10), b = writeImage(dir + "/b.png", 10, 10);
   // TC01: identical images: PSNR inf, no difference, exit 0
   const Outcome r = run({"compare", a, b});
@@ -114,7 +107,7 @@ TEST(CompareTests, toleranceBoundary) {
 }
 
 TEST(CompareTests, imagesThatCannotBeCompared) {
-  const std::string dir = freshDirectory("bad");
+  const std::string dir = test::freshTestDirectory("compare-bad");
   const std::string a = writeImage(dir + "/a.png", 10, 10);
   const std::string tall = writeImage(dir + "/tall.png", 10, 12);
   // TC01: images of different sizes: exit 2, naming both files and their sizes
@@ -154,7 +147,7 @@ TEST(CompareTests, imagesThatCannotBeCompared) {
 }
 
 TEST(CompareTests, differenceHeatMap) {
-  const std::string dir = freshDirectory("heat-map");
+  const std::string dir = test::freshTestDirectory("compare-heat-map");
   // Differences of 4 (the largest), 2 and 1 at three pixels; the others equal.
   const std::string a = writeImage(dir + "/a.png", 4, 3);
   const std::string b = writeImage(

@@ -20,10 +20,6 @@ namespace fs = std::filesystem;
 using test::Outcome;
 using test::run;
 
-std::string freshDirectory(const std::string& name) {
-  return test::freshTestDirectory("warnings-" + name);
-}
-
 std::string writeText(const std::string& path, const std::string& text) {
   std::ofstream(path) << text;
   return path;
@@ -60,7 +56,7 @@ std::string ambientWarning(const std::string& chosenBy) {
 }
 
 TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
-  const std::string dir = freshDirectory("ambient");
+  const std::string dir = test::freshTestDirectory("warnings-ambient");
   const std::string dark = writeText(dir + "/dark.json", sphereScene("{}"));
   // TC01: --tracer ambient on a scene without ambient light: the warning first, then the render
   Outcome r = run({"render", dark, "--tracer", "ambient", "-o", dir + "/a.png"});
@@ -110,7 +106,7 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
 
 TEST(SceneWarningTests, glassFacesWoundBothWays) {
   if (!has("phong")) GTEST_SKIP() << "a cut before stage05_lighting has no materials";
-  const std::string dir = freshDirectory("winding");
+  const std::string dir = test::freshTestDirectory("warnings-winding");
   // Two glass triangles sharing the edge (1,0,0)-(0,1,0) in the same direction.
   const std::string scene = writeText(
       dir + "/sheet.json",
@@ -144,7 +140,7 @@ TEST(SceneWarningTests, glassFacesWoundBothWays) {
 }
 
 TEST(SceneWarningTests, outputNamingADirectory) {
-  const std::string dir = freshDirectory("directory");
+  const std::string dir = test::freshTestDirectory("warnings-directory");
   fs::create_directories(dir + "/images");
   fs::create_directories(dir + "/shot.png");
   // TC01: -o naming an existing directory says so (not that its name lacks .png), renders
