@@ -8,8 +8,8 @@ The page shows, from what the repository holds (nothing is rendered here):
     paragraph of its README and the images of docs/images/ its README links;
   - the galaxy with and without diffused glass (docs/images/galaxy.png and
     docs/images/galaxy-no-diffusion.png);
-  - every other reference image of docs/images/ (`rt render NAME --width 500`, see
-    scripts/render-docs-images.sh);
+  - every other image of docs/images/ (a scene's reference image is `rt render NAME
+    --width 500`, see scripts/render-docs-images.sh);
   - the timing across stages: a bar chart (inline SVG) and a table from the JSON that
     `rt bench --json` writes, read from docs/bench.json (or --bench FILE).
 Whatever is missing (a README, a linked image, the galaxy pair, the timing) is left out of the
@@ -301,8 +301,9 @@ def page(root: Path, bench_path: Path, page_dir: Path) -> str:
     rest = sorted(p for p in images.glob("*.png") if p.name not in shown) if images.is_dir() \
         else []
     if rest:
-        body.append('<h2 id="references">Every other reference image</h2>')
-        body.append("<p>Each is <code>rt render NAME --width 500</code>; compare yours with "
+        body.append('<h2 id="references">Every other image</h2>')
+        body.append("<p>An image named after a scene of <code>rt list</code> is its reference "
+                    "image, <code>rt render NAME --width 500</code>: compare yours with "
                     "<code>rt compare mine.png docs/images/NAME.png</code>.</p>")
         body.append('<div class="images">' + "".join(
             figure(p, page_dir, f"<code>{html.escape(p.stem)}</code>") for p in rest) + "</div>")
