@@ -46,6 +46,40 @@ TEST(NearestNameTests, nearestName) {
   EXPECT_EQ(nearestName("render", Names{}), "");
 }
 
+TEST(NearestNameTests, containedNames) {
+  const Names lights{"directional", "point", "spot"};
+  const Names shapes{"sphere", "plane", "triangle", "polygon", "tube", "cylinder"};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a known name inside the word, five edits away ("spotlight" for "spot")
+  EXPECT_EQ(nearestName("spotlight", lights), "spot");
+  // TC02: the word is the start of a known name (an abbreviation)
+  EXPECT_EQ(nearestName("cyl", shapes), "cylinder");
+  // TC03: the word is inside a known name, not at its start
+  EXPECT_EQ(nearestName("mirrors", Names{"two-color", "hall-of-mirrors"}), "hall-of-mirrors");
+  // TC04: case is ignored
+  EXPECT_EQ(nearestName("SpotLight", lights), "spot");
+  // TC05: the edit-distance rule comes first: "spotlighs" is one edit away, though "spot",
+  // listed first, is inside the word
+  EXPECT_EQ(nearestName("spotlight", Names{"spot", "spotlighs"}), "spotlighs");
+  // TC06: of several names that contain the word, the closest in length
+  EXPECT_EQ(nearestName("light-sphere", Names{"light-sphere-directional", "light-sphere-spot",
+                                              "light-sphere-point"}),
+            "light-sphere-spot");
+  // TC07: ... the first listed on a tie
+  EXPECT_EQ(nearestName("all-features", Names{"all-features-below", "all-features-above"}),
+            "all-features-below");
+  // TC08: neither contains the other
+  EXPECT_EQ(nearestName("sun", lights), "");
+
+  // =============== Boundary Values Tests ==================
+  // TC11: the shorter of the two has three characters: suggested
+  EXPECT_EQ(nearestName("tri", shapes), "triangle");
+  EXPECT_EQ(nearestName("index-ior", Names{"kD", "ior"}), "ior");
+  // TC12: ... two characters: not ("cy" starts "cylinder", "kD" is inside "kDiffuse")
+  EXPECT_EQ(nearestName("cy", shapes), "");
+  EXPECT_EQ(nearestName("kDiffuse", Names{"kD", "kS"}), "");
+}
+
 TEST(NearestNameTests, didYouMean) {
   const Names keys{"center", "radius"};
   // ============ Equivalence Partitions Tests ==============
@@ -53,6 +87,8 @@ TEST(NearestNameTests, didYouMean) {
   EXPECT_EQ(didYouMean("raduis", keys), "; did you mean 'radius'?");
   // TC02: no near name: nothing
   EXPECT_EQ(didYouMean("colour", keys), "");
+  // TC03: a name inside the word
+  EXPECT_EQ(didYouMean("spotlight", Names{"point", "spot"}), "; did you mean 'spot'?");
 }
 
 }  // namespace

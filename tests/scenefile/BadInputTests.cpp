@@ -267,6 +267,16 @@ const BadInput BAD_INPUTS[] = {
      "}\n",
      "bad.json:4:23: lights[0].type: expected a light type (directional, point, spot), got "
      "\"sun\""},
+    // EP46: a light type that contains a known one ("spotlight"): the suggester's containment
+    // rule names it, though it is five edits away
+    {"UnknownLightTypeContainingOne",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"lights\": [{\"type\": \"spotlight\", \"intensity\": [1, 1, 1]}]\n"
+     "}\n",
+     "bad.json:4:23: lights[0].type: expected a light type (directional, point, spot), got "
+     "\"spotlight\"; did you mean 'spot'?"},
     // EP29: unknown geometry type (the known ones listed)
     {"UnknownGeometryType",
      "{\n"

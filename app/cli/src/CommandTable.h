@@ -16,6 +16,7 @@ void addListCommand(CommandLine& rt);
 void addRenderCommand(CommandLine& rt);
 void addProbeCommand(CommandLine& rt);
 void addExportCommand(CommandLine& rt);
+void addCompareCommand(CommandLine& rt);
 
 struct BuiltinScene;
 /// The built-in scene called name. @throws UsageError "unknown scene 'x'; did you mean 'y'?
@@ -49,5 +50,11 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments);
 /// before their camera allocates it).
 /// @throws UsageError naming the size and the memory.
 void checkImageFits(int nX, int nY);
+
+/// Prints "rt: warning: ..." on io.err for each warning the scene file's reader left in
+/// doc.warnings (stage 7: glass faces wound both ways) and, when rendering, for a render by the
+/// ambient tracer of a scene whose ambient light is zero (every shape would be black).
+void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, bool rendering,
+                    const Io& io);
 
 }  // namespace rt::cli

@@ -34,7 +34,8 @@ const char* const kFooter =
     "  rt render two-color -o two-color.png --width 400 --height 400\n"
     "  rt render my-scene.json --tracer shadow\n"
     "  rt probe two-color --pixel 500,500\n"
-    "  rt export two-color -o two-color.json\n\n"
+    "  rt export two-color -o two-color.json\n"
+    "  rt compare mine.png docs/images/two-color.png\n\n"
     "Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).\n";
 
 int list(const Io& io) {
@@ -58,6 +59,7 @@ CommandLine makeCommandLine() {
   addRenderCommand(rt);
   addProbeCommand(rt);
   addExportCommand(rt);
+  addCompareCommand(rt);
   for (const auto& add : cliRegistry().commands) add(rt);
   return rt;
 }
@@ -217,6 +219,28 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
   if (arguments.settings.accel) doc.render.accel = *arguments.settings.accel;
   findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
   return doc;
+}
+
+void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, bool rendering,
+                    const Io& io) {
+  for (const std::string& w : doc.warnings) io.err << "rt: warning: " << w << "\n";
+  const Scene& scene = *doc.scene;
+  const Double3& ambient = scene.ambientLight.intensity().rgb();
+  const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
+  if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
+      !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
+    return;
+  std::string others;
+  for (const TracerKind& t : tracerKinds())
+    if (t.name != "ambient") others += (others.empty() ? "" : ", ") + t.name;
+  io.err << "rt: warning: the ambient tracer ("
+         << (arguments.tracer ? "--tracer ambient" : "the scene's render.tracer")
+         << ") shows the ambient light wherever a ray hits a shape, and this scene's ambient "
+            "light is zero (ambient.color x ambient.kA): every shape will be black; give the "
+            "scene an ambient light"
+         << (others.empty() ? ""
+                            : ", or render with a tracer that shows its lights (" + others + ")")
+         << "\n";
 }
 
 }  // namespace rt::cli

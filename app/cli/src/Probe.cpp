@@ -28,6 +28,7 @@ int probe(const ProbeArgs& args, const Io& io) {
     throw UsageError(std::string(byRay ? "give only one of" : "missing") +
                      " --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)");
   SceneDocument doc = sceneFromArguments(args.scene);
+  warnAboutScene(doc, args.scene, false, io);
 
   const CliRegistry& registry = cliRegistry();
   const std::unique_ptr<Intersectable> accelerator =

@@ -40,6 +40,7 @@ int render(const RenderArgs& args, const Io& io) {
 
   const CliRegistry& registry = cliRegistry();
   const TracerKind& kind = findTracer(doc.render.tracer);
+  if (!args.silent) warnAboutScene(doc, args.scene, true, io);
   const std::unique_ptr<Intersectable> accelerator =
       registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
   const std::unique_ptr<RayTracer> tracer = kind.make(doc, accelerator.get());

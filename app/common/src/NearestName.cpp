@@ -36,6 +36,35 @@ std::size_t editDistance(std::string_view a, std::string_view b, std::size_t bou
   return std::min(previous[b.size()], bound + 1);
 }
 
+/// Whether the shorter of a and b, at least MIN_CONTAINED characters long, occurs in the longer
+/// one, ignoring case.
+bool containsEither(std::string_view a, std::string_view b) {
+  constexpr std::size_t MIN_CONTAINED = 3;
+  const std::string_view shorter = a.size() < b.size() ? a : b;
+  const std::string_view longer = a.size() < b.size() ? b : a;
+  if (shorter.size() < MIN_CONTAINED) return false;
+  const auto same = [](char x, char y) { return lower(x) == lower(y); };
+  return std::search(longer.begin(), longer.end(), shorter.begin(), shorter.end(), same) !=
+         longer.end();
+}
+
+/// The known name that contains word or is contained in it, the closest in length, the first
+/// listed on a tie; empty when there is none.
+std::string_view containingName(std::string_view word, std::span<const std::string_view> known) {
+  std::string_view best;
+  std::size_t bestGap = 0;
+  for (std::string_view k : known) {
+    if (!containsEither(word, k)) continue;
+    const std::size_t gap =
+        k.size() > word.size() ? k.size() - word.size() : word.size() - k.size();
+    if (best.empty() || gap < bestGap) {
+      best = k;
+      bestGap = gap;
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 std::string_view nearestName(std::string_view word, std::span<const std::string_view> known) {
@@ -50,7 +79,7 @@ std::string_view nearestName(std::string_view word, std::span<const std::string_
       bestDistance = d;
     }
   }
-  return best;
+  return best.empty() ? containingName(word, known) : best;
 }
 
 std::string didYouMean(std::string_view word, std::span<const std::string_view> known) {

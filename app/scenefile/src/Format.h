@@ -109,6 +109,10 @@ class SceneFormat {
   /// what a shape carries: stage 4 adds the shape; stage 5 its appearance too).
   std::function<void(const Node& node, GeometryFields& fields, Geometry shape)> addGeometry;
 
+  /// Checks of a document just read, called with the file's root value once every key is read;
+  /// each may add warnings to the document (root.context().doc.warnings; stage 7: the winding of
+  /// the faces of glass shapes).
+  std::vector<std::function<void(const Node& root)>> checkRead;
   /// Checks run before anything is written (stage 5: the scene holds together); each throws
   /// std::logic_error or std::invalid_argument for a document that cannot be written.
   std::vector<std::function<void(const SceneDocument&)>> checkDocument;

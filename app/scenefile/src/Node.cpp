@@ -125,13 +125,22 @@ void Node::failAt(std::uint32_t offset, const std::string& detail) const {
   throw SceneError(ctx_->source, line, column, path(), detail);
 }
 
-void Node::fail(const std::string& detail) const {
+std::uint32_t Node::reportedOffset() const {
   const auto& entries = ctx_->map.entries;
   // A default value has no position of its own: point at the object that lacks the key.
   const Node* located = this;
   while (located && located->entry_ >= entries.size()) located = located->parent_;
-  failAt(located ? entries[located->entry_].valueOffset : SourceEntry::NONE, detail);
+  return located ? entries[located->entry_].valueOffset : SourceEntry::NONE;
 }
+
+std::string Node::message(const std::string& detail) const {
+  const std::uint32_t offset = reportedOffset();
+  const LineColumn lc =
+      offset == SourceEntry::NONE ? LineColumn{} : lineColumnOf(ctx_->text, offset);
+  return SceneError::format(ctx_->source, lc.line, lc.column, path(), detail);
+}
+
+void Node::fail(const std::string& detail) const { failAt(reportedOffset(), detail); }
 
 void Node::failAtKey(const std::string& detail) const {
   const auto& entries = ctx_->map.entries;

@@ -83,6 +83,9 @@ class Node {
   /// The value as the file wrote it (numbers in the file's own spelling), shortened when long.
   std::string describe() const;
 
+  /// "FILE:LINE:COL: PATH: detail" at this value's position: what fail() reports (for a
+  /// warning).
+  std::string message(const std::string& detail) const;
   /// Throws a SceneError at this value's position: "FILE:LINE:COL: PATH: detail".
   [[noreturn]] void fail(const std::string& detail) const;
   /// As fail, but at the member's key ("unknown key", "duplicate key") when it has one.
@@ -103,6 +106,9 @@ class Node {
   std::uint32_t firstChild() const;
   std::uint32_t nextSibling(std::uint32_t entry) const;
   [[noreturn]] void failAt(std::uint32_t offset, const std::string& detail) const;
+  /// The offset fail() reports at: the value's own, or, for a default value (which has none),
+  /// the nearest parent's.
+  std::uint32_t reportedOffset() const;
 
   Context* ctx_;
   const Json* json_;

@@ -30,7 +30,9 @@ SceneDocument parseScene(std::string_view text, const std::string& sourceName) {
   const SceneFormat& format = sceneFormat();
   ctx.doc.scene = format.liftScene(Scene{});
   static const KeyTable<SceneDocument> documentKeys = format.table<SceneDocument>("document");
-  readObject(Node(ctx, root), documentKeys, ctx.doc, "a scene object");
+  const Node document(ctx, root);
+  readObject(document, documentKeys, ctx.doc, "a scene object");
+  for (const auto& check : format.checkRead) check(document);
   return std::move(ctx.doc);
 }
 

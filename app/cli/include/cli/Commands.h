@@ -8,6 +8,7 @@
 ///   rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet]
 ///   rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y) [--width W] [--height H] [--tracer T]
 ///   rt export NAME [-o FILE.json]
+///   rt compare A.png B.png [--diff OUT.png] [--tolerance T]   (cli/Compare.h)
 ///   rt --help | rt COMMAND --help | rt --version
 ///
 /// Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).

@@ -18,6 +18,12 @@ namespace rt {
 /// five characters, a third of a longer one, never more than three, so that short words do not
 /// suggest unrelated short names. Among several near names the nearest wins, the first listed
 /// on a tie.
+///
+/// When no name is near by that rule, a name that contains the word or is contained in it
+/// (ignoring case; a prefix is one case) is suggested, provided the shorter of the two has at
+/// least three characters: "spotlight" suggests "spot", "cyl" suggests "cylinder", while "st"
+/// suggests nothing. Among several such names the one whose length differs least from the
+/// word's wins, the first listed on a tie.
 std::string_view nearestName(std::string_view word, std::span<const std::string_view> known);
 
 /// "; did you mean 'NAME'?" for the nearest name, or "" when no name is near.

@@ -51,6 +51,10 @@ struct SceneDocument {
   /// The names the file gave to shapes, by geometry index: only the named ones (a generated
   /// scene of a million unnamed stars keeps none).
   std::map<std::uint32_t, std::string> geometryNames;
+  /// What the reader found questionable but not wrong, one message per problem, each naming the
+  /// file, line and column and the JSON path like an error ("x.json:9:5: geometries[4]: ...";
+  /// stage 7: glass faces wound both ways). Empty for a built-in scene; never written.
+  std::vector<std::string> warnings;
 
   /// Geometry i's name, or nullptr when it has none.
   const std::string* geometryName(std::uint32_t i) const {

@@ -1,0 +1,359 @@
+#!/usr/bin/env python3
+"""Writes the gallery, docs/index.html: one static page of the course.
+
+  scripts/make-gallery.py [--root DIR] [--bench FILE] [-o FILE]
+
+The page shows, from what the repository holds (nothing is rendered here):
+  - the stage map: every stage folder (stageNN_*, miniN_*) in course order, with the first
+    paragraph of its README and the images of docs/images/ its README links;
+  - the galaxy with and without diffused glass (docs/images/galaxy.png and
+    docs/images/galaxy-no-diffusion.png);
+  - every other image of docs/images/ (a scene's reference image is `rt render NAME
+    --width 500`, see scripts/render-docs-images.sh);
+  - the timing across stages: a bar chart (inline SVG) and a table from the JSON that
+    `rt bench --json` writes, read from docs/bench.json (or --bench FILE).
+Whatever is missing (a README, a linked image, the galaxy pair, the timing) is left out of the
+page, said so on it, and listed on stderr as "make-gallery: missing: ...". The exit code is 0
+then too; 2 for bad usage or a timing file that does not follow the schema below.
+
+The timing file, as `rt bench --json` writes it:
+  {"scene": "...", "width": W, "height": H,
+   "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh", "threads": N,
+             "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
+             "nodesPerRay": Y, "speedup": Z, "seedSeconds": null or a number}]}
+
+--root is the repository (default: this script's); the page's links, images and style sheet
+(docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
+python3 comes with scripts/deps.sh python3.
+"""
+from __future__ import annotations
+
+import argparse
+import html
+import json
+import math
+import os
+import re
+import struct
+import sys
+from pathlib import Path
+
+PROGRAM = "make-gallery"
+STYLESHEET = Path(__file__).resolve().parent.parent / "docs" / "gallery.css"
+STAGE_FOLDER = re.compile(r"^(stage|mini)(\d+)_[A-Za-z0-9_]+$")
+IMAGE_LINK = re.compile(r"docs/images/([A-Za-z0-9_.-]+\.png)")
+GALAXY = [("galaxy.png", "with diffused glass", "the seed's final image"),
+          ("galaxy-no-diffusion.png", "without diffused glass", "one ray per refraction")]
+THUMBNAIL = 240  # the width of an image on the page, in CSS pixels
+
+# The chart's layout, in SVG user units (pixels).
+CHART_WIDTH = 760
+LABEL_WIDTH = 250   # the rows' names, right-aligned at LABEL_WIDTH - 8
+BAR_AREA = 360      # the longest bar
+ROW_HEIGHT = 28
+BAR_HEIGHT = 16
+CHART_TOP = 44      # the title and the legend above the first row
+
+ROW_KEYS = {"name": str, "tracer": str, "accel": str, "threads": int, "seconds": (int, float),
+            "primary": int, "secondary": int, "shadow": int, "raysPerSecond": (int, float),
+            "nodesPerRay": (int, float), "speedup": (int, float)}
+
+
+class BadInput(Exception):
+    """A timing file that does not follow the schema."""
+
+
+def missing(what: str) -> None:
+    print(f"{PROGRAM}: missing: {what}", file=sys.stderr)
+
+
+# ---- Text --------------------------------------------------------------------------------------
+
+def inline_markdown(text: str) -> str:
+    """The inline Markdown of a README paragraph as HTML: `code`, **bold**, *emphasis* and
+    [links](target) (their text only: the targets are relative to the README)."""
+    out = []
+    for k, part in enumerate(re.split(r"(`[^`]*`)", text)):
+        if k % 2:
+            out.append("<code>" + html.escape(part[1:-1]) + "</code>")
+            continue
+        part = html.escape(part, quote=False)
+        part = re.sub(r"\[([^\]]+)\]\([^)]*\)", r"\1", part)
+        part = re.sub(r"\*\*(.+?)\*\*", r"<strong>\1</strong>", part)
+        part = re.sub(r"(?<![\w*])\*(?!\s)(.+?)(?<!\s)\*(?![\w*])", r"<em>\1</em>", part)
+        out.append(part)
+    return "".join(out)
+
+
+def first_paragraph(readme: str) -> str:
+    """The first paragraph of prose after the title: its lines up to a blank line, joined."""
+    lines: list[str] = []
+    for line in readme.splitlines():
+        stripped = line.strip()
+        if not lines:
+            if not stripped or stripped.startswith(("#", "|", "```", "<!--", "!")):
+                continue
+        elif not stripped or stripped.startswith(("#", "|", "```")):
+            break
+        lines.append(stripped)
+    return " ".join(lines)
+
+
+def format_seconds(s: float) -> str:
+    """12.3 s, 4 min 05 s, 1 h 21 min (as scripts/common.sh's rt_elapsed, with hours)."""
+    if s < 60:
+        return f"{s:.3g} s"
+    if s < 3600:
+        return f"{int(s // 60)} min {int(s) % 60:02d} s"
+    return f"{int(s // 3600)} h {int(s) % 3600 // 60:02d} min"
+
+
+def format_number(x: float) -> str:
+    """Thousands separated by thin spaces, at most three decimals."""
+    if isinstance(x, int) or float(x).is_integer():
+        return f"{int(x):,}".replace(",", "\u2009")
+    return f"{x:,.3f}".rstrip("0").rstrip(".").replace(",", "\u2009")
+
+
+# ---- Images ------------------------------------------------------------------------------------
+
+def png_size(path: Path) -> tuple[int, int] | None:
+    """The width and height in a PNG's header, or None when it is not a PNG."""
+    with path.open("rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
+
+
+def figure(image: Path, page_dir: Path, caption: str) -> str:
+    size = png_size(image)
+    width, height = size if size else (1, 1)
+    shown_height = round(THUMBNAIL * height / width)
+    src = Path(os.path.relpath(image, page_dir)).as_posix()
+    return (f'<figure><a href="{html.escape(src)}"><img src="{html.escape(src)}" '
+            f'alt="{html.escape(image.stem)}" width="{THUMBNAIL}" height="{shown_height}"></a>'
+            f"<figcaption>{caption}</figcaption></figure>")
+
+
+# ---- The timing chart --------------------------------------------------------------------------
+
+def read_bench(path: Path) -> dict:
+    """The timing file, checked against the schema. @raises BadInput naming the place."""
+    try:
+        bench = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as e:
+        raise BadInput(f"{path}: cannot read it as JSON: {e}") from e
+    if not isinstance(bench, dict):
+        raise BadInput(f"{path}: expected an object {{scene, width, height, rows}}")
+    for key, kind in (("scene", str), ("width", int), ("height", int), ("rows", list)):
+        if not isinstance(bench.get(key), kind) or isinstance(bench.get(key), bool):
+            raise BadInput(f"{path}: {key}: expected {kind.__name__}, got {bench.get(key)!r}")
+    for i, row in enumerate(bench["rows"]):
+        if not isinstance(row, dict):
+            raise BadInput(f"{path}: rows[{i}]: expected an object")
+        for key, kind in ROW_KEYS.items():
+            value = row.get(key)
+            if not isinstance(value, kind) or isinstance(value, bool):
+                raise BadInput(f"{path}: rows[{i}].{key}: expected "
+                               f"{'a number' if isinstance(kind, tuple) else kind.__name__}, "
+                               f"got {value!r}")
+        seed = row.get("seedSeconds")
+        if seed is not None and (not isinstance(seed, (int, float)) or isinstance(seed, bool)):
+            raise BadInput(f"{path}: rows[{i}].seedSeconds: expected null or a number, "
+                           f"got {seed!r}")
+        for key in ("seconds", "seedSeconds"):
+            value = row.get(key)
+            if value is not None and not (math.isfinite(value) and value >= 0):
+                raise BadInput(f"{path}: rows[{i}].{key}: expected a number >= 0, got {value!r}")
+    return bench
+
+
+def bar_width(seconds: float, longest: float) -> float:
+    """A bar's length: BAR_AREA for the longest time, proportional below, to 0.1."""
+    return round(BAR_AREA * seconds / longest, 1) if longest > 0 else 0.0
+
+
+def timing_chart(bench: dict) -> str:
+    """The rows as horizontal bars (inline SVG): the time of each (filled) and, where the row
+    has one, the seed's time for the same render (outlined), on one linear scale."""
+    rows = bench["rows"]
+    longest = max([r["seconds"] for r in rows] +
+                  [r["seedSeconds"] for r in rows if r.get("seedSeconds") is not None] + [0])
+    height = CHART_TOP + ROW_HEIGHT * len(rows) + 8
+    title = f'{bench["scene"]}, {bench["width"]}\u00d7{bench["height"]}'
+    parts = [f'<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{CHART_WIDTH}" '
+             f'height="{height}" viewBox="0 0 {CHART_WIDTH} {height}" role="img" '
+             f'aria-label="render time by stage: {html.escape(title)}">',
+             f'<text class="title" x="0" y="16">{html.escape(title)}: wall time per render</text>',
+             '<rect class="bar" x="0" y="26" width="12" height="10"/>'
+             '<text x="16" y="35">this repository</text>']
+    if any(r.get("seedSeconds") is not None for r in rows):
+        parts.append('<rect class="seed" x="140" y="26" width="12" height="10"/>'
+                     '<text x="156" y="35">the seed (the course\'s Java project)</text>')
+    for i, r in enumerate(rows):
+        y = CHART_TOP + i * ROW_HEIGHT
+        bar_y = y + (ROW_HEIGHT - BAR_HEIGHT) / 2
+        text_y = y + ROW_HEIGHT / 2 + 5
+        details = (f'{r["name"]}: tracer {r["tracer"]}, acceleration {r["accel"]}, '
+                   f'{r["threads"]} thread{"s" if r["threads"] != 1 else ""}; '
+                   f'{format_seconds(r["seconds"])}, {format_number(r["raysPerSecond"])} rays/s, '
+                   f'{format_number(r["nodesPerRay"])} nodes/ray, speed-up {r["speedup"]:g}\u00d7')
+        if r.get("seedSeconds") is not None:
+            details += f'; the seed: {format_seconds(r["seedSeconds"])}'
+        w = bar_width(r["seconds"], longest)
+        value = f'{format_seconds(r["seconds"])} ({r["speedup"]:g}\u00d7)'
+        parts.append(f'<g class="row"><title>{html.escape(details)}</title>')
+        parts.append(f'<text class="label" x="{LABEL_WIDTH - 8}" y="{text_y:g}" '
+                     f'text-anchor="end">{html.escape(r["name"])}</text>')
+        end = w
+        if r.get("seedSeconds") is not None:
+            seed_w = bar_width(r["seedSeconds"], longest)
+            end = max(w, seed_w)
+            value += f'; the seed: {format_seconds(r["seedSeconds"])}'
+            parts.append(f'<rect class="seed" x="{LABEL_WIDTH}" y="{bar_y:g}" '
+                         f'width="{seed_w:g}" height="{BAR_HEIGHT}"/>')
+        parts.append(f'<rect class="bar" x="{LABEL_WIDTH}" y="{bar_y:g}" width="{w:g}" '
+                     f'height="{BAR_HEIGHT}"/>')
+        parts.append(f'<text class="value" x="{LABEL_WIDTH + end + 6:g}" y="{text_y:g}">'
+                     f'{html.escape(value)}</text></g>')
+    parts.append("</svg>")
+    return "\n".join(parts)
+
+
+def timing_table(bench: dict) -> str:
+    head = ("name", "tracer", "acceleration", "threads", "time", "primary rays",
+            "secondary rays", "shadow rays", "rays/s", "nodes/ray", "speed-up", "the seed")
+    out = ["<table><thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead><tbody>"]
+    for r in bench["rows"]:
+        seed = r.get("seedSeconds")
+        cells = (html.escape(r["name"]), html.escape(r["tracer"]), html.escape(r["accel"]),
+                 str(r["threads"]), format_seconds(r["seconds"]), format_number(r["primary"]),
+                 format_number(r["secondary"]), format_number(r["shadow"]),
+                 format_number(r["raysPerSecond"]), format_number(r["nodesPerRay"]),
+                 f'{r["speedup"]:g}\u00d7', format_seconds(seed) if seed is not None else "—")
+        out.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    out.append("</tbody></table>")
+    return "\n".join(out)
+
+
+# ---- The page ----------------------------------------------------------------------------------
+
+def stage_folders(root: Path) -> list[Path]:
+    """stageNN_* then miniN_*, each by number: the course's order."""
+    found = [p for p in root.iterdir() if p.is_dir() and STAGE_FOLDER.match(p.name)]
+
+    def key(p: Path) -> tuple[int, int]:
+        m = STAGE_FOLDER.match(p.name)
+        return (0 if m.group(1) == "stage" else 1, int(m.group(2)))
+    return sorted(found, key=key)
+
+
+def stage_section(folder: Path, root: Path, page_dir: Path, shown: set[str]) -> str:
+    readme = folder / "README.md"
+    rel = Path(os.path.relpath(readme, page_dir)).as_posix()
+    out = [f'<section class="stage" id="{folder.name}">']
+    if not readme.is_file():
+        missing(f"{folder.name}/README.md")
+        out.append(f"<h3>{folder.name}</h3><p class=\"note\">No README yet.</p></section>")
+        return "\n".join(out)
+    text = readme.read_text(encoding="utf-8")
+    out.append(f'<h3><a href="{html.escape(rel)}">{folder.name}</a></h3>')
+    out.append(f"<p>{inline_markdown(first_paragraph(text))}</p>")
+    figures = []
+    for name in dict.fromkeys(IMAGE_LINK.findall(text)):  # in the README's order, once each
+        image = root / "docs" / "images" / name
+        if not image.is_file():
+            missing(f"docs/images/{name} (linked by {folder.name}/README.md)")
+            continue
+        shown.add(name)
+        figures.append(figure(image, page_dir, f"<code>{html.escape(image.stem)}</code>"))
+    if figures:
+        out.append('<div class="images">' + "".join(figures) + "</div>")
+    out.append("</section>")
+    return "\n".join(out)
+
+
+def page(root: Path, bench_path: Path, page_dir: Path) -> str:
+    bench = read_bench(bench_path) if bench_path.is_file() else None  # first: it may be bad
+    images = root / "docs" / "images"
+    shown: set[str] = set()
+    body = ["<h1>A staged ray tracer: the gallery</h1>",
+            "<p>Generated by <code>scripts/make-gallery.py</code> from the stages' READMEs, "
+            "<code>docs/images/</code> and the timing of <code>rt bench --json</code>. "
+            "The stages, in the course's order, each with the first paragraph of its README "
+            "and the images it shows:</p>",
+            '<h2 id="stages">The stages</h2>']
+    body += [stage_section(f, root, page_dir, shown) for f in stage_folders(root)]
+
+    body.append('<h2 id="galaxy">The galaxy in a glass box, with and without diffused '
+                'glass</h2>')
+    pair = []
+    for name, which, detail in GALAXY:
+        if (images / name).is_file():
+            shown.add(name)
+            pair.append(figure(images / name, page_dir, f"{which} ({detail})"))
+        else:
+            missing(f"docs/images/{name} (the galaxy {which})")
+    body.append('<div class="images">' + "".join(pair) + "</div>" if pair else
+                '<p class="note">Not rendered yet.</p>')
+
+    rest = sorted(p for p in images.glob("*.png") if p.name not in shown) if images.is_dir() \
+        else []
+    if rest:
+        body.append('<h2 id="references">Every other image</h2>')
+        body.append("<p>An image named after a scene of <code>rt list</code> is its reference "
+                    "image, <code>rt render NAME --width 500</code>: compare yours with "
+                    "<code>rt compare mine.png docs/images/NAME.png</code>.</p>")
+        body.append('<div class="images">' + "".join(
+            figure(p, page_dir, f"<code>{html.escape(p.stem)}</code>") for p in rest) + "</div>")
+
+    body.append('<h2 id="timing">Timing across stages</h2>')
+    if bench:
+        body.append(timing_chart(bench))
+        body.append(timing_table(bench))
+    else:
+        where = os.path.relpath(bench_path, root) if bench_path.is_relative_to(root) \
+            else str(bench_path)
+        missing(f"{where} (the timing: rt bench --json > docs/bench.json)")
+        body.append('<p class="note">No timing yet: <code>rt bench --json &gt; docs/bench.json'
+                    "</code>, then run <code>scripts/make-gallery.py</code> again.</p>")
+    style = Path(os.path.relpath(STYLESHEET, page_dir)).as_posix()
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+            "<title>A staged ray tracer: the gallery</title>\n"
+            f'<link rel="stylesheet" href="{html.escape(style)}">\n</head>\n<body>\n' +
+            "\n".join(body) + "\n</body>\n</html>\n")
+
+
+def main(argv: list[str]) -> int:
+    parser = argparse.ArgumentParser(prog="scripts/make-gallery.py",
+                                     description="Writes the gallery page, docs/index.html.")
+    parser.add_argument("--root", type=Path, default=Path(__file__).resolve().parent.parent,
+                        help="the repository (default: this script's)")
+    parser.add_argument("--bench", type=Path,
+                        help="the timing, as rt bench --json writes it (default: "
+                             "ROOT/docs/bench.json)")
+    parser.add_argument("-o", "--output", type=Path,
+                        help="where to write the page (default: ROOT/docs/index.html)")
+    args = parser.parse_args(argv)
+    root = args.root.resolve()
+    if not root.is_dir():
+        print(f"{PROGRAM}: --root: no directory '{args.root}'", file=sys.stderr)
+        return 2
+    output = (args.output or root / "docs" / "index.html").resolve()
+    bench = (args.bench or root / "docs" / "bench.json").resolve()
+    try:
+        text = page(root, bench, output.parent)
+    except BadInput as e:
+        print(f"{PROGRAM}: {e}", file=sys.stderr)
+        return 2
+    output.parent.mkdir(parents=True, exist_ok=True)
+    temporary = output.with_name(output.name + ".tmp")
+    temporary.write_text(text, encoding="utf-8")
+    temporary.replace(output)  # written whole or not at all
+    print(f"{PROGRAM}: wrote {output}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
