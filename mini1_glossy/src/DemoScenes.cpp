@@ -422,11 +422,10 @@ SceneSetup<LitScene> superSampling() {
   s.add(Sphere(Point(-1.3, 1, 0), 1), Color(8, 8, 10), glossy);
   s.add(Sphere(Point(1.2, 0.6, -4.5), 0.6), Color(150, 40, 30), material(0.4, 0.5, 60));
   s.add(Sphere(Point(-0.4, 0.6, -9), 0.6), Color(30, 80, 150), material(0.4, 0.5, 60));
-  // A pane of glass in front of the red sphere (clear until frostedGrid > 1).
+  // A pane of glass in front of the right half of the red sphere (clear until frostedGrid > 1).
   Material glass = material(0.05, 0.4, 60, 0.85, 0.05);
   glass.refractedBeam = {1, 0.08, 1};
-  s.add(Polygon{Point(0.4, 0.1, -2.5), Point(2.4, 0.1, -2.5), Point(2.4, 2.3, -2.5),
-                Point(0.4, 2.3, -2.5)},
+  s.add(Polygon{Point(1, 0.1, -2.5), Point(3, 0.1, -2.5), Point(3, 2.3, -2.5), Point(1, 2.3, -2.5)},
         Color(4, 6, 8), glass);
   // A light of radius 1 (a point until shadowSamples > 1).
   s.addLight(PointLight(Color(230, 220, 200), Point(-2, 7, 4)).setRadius(1));

@@ -127,9 +127,10 @@ SceneSetup<LitScene> depthOfField();
 SceneSetup<LitScene> adaptiveEdges();
 
 /// All the techniques in one scene, each off: a glossy sphere (beam radius 0.08, N = 1), a pane
-/// of glass (beam radius 0.08, N = 1), a light of radius 1 (one shadow ray), two more spheres
-/// at other depths and a focal distance on the glossy sphere (aperture 0); 400 x 300. Rendered
-/// as it is, it is the Whitted tracer's image; the knobs turn each technique on.
+/// of glass in front of half of a red sphere (beam radius 0.08, N = 1), a light of radius 1 (one
+/// shadow ray), a blue sphere further back and a focal distance on the glossy sphere (aperture
+/// 0); 400 x 300. Rendered as it is, it is the Whitted tracer's image; the knobs turn each
+/// technique on.
 SceneSetup<LitScene> superSampling();
 
 }  // namespace demo
