@@ -5,9 +5,11 @@
 #
 # Every README.md of the repository that links docs/images/NAME.png, where NAME is a built-in
 # scene of `rt list`, gets that scene rendered with `rt render NAME` at its full resolution (or
-# with the options given). Links to images that are no built-in scene are listed and left alone.
-# --list prints what would be rendered and renders nothing. Set RT_BUILD_DIR to build somewhere
-# other than build/release.
+# with the options given). An image listed in docs/images/render-options.txt (a line
+# `NAME SCENE [RT_RENDER_OPTION]...`) is `rt render SCENE` with that line's options instead, and
+# only those: a comparison pair of one scene, an image with --param or a size of its own. Links
+# to other images are listed and left alone. --list prints what would be rendered and renders
+# nothing. Set RT_BUILD_DIR to build somewhere other than build/release.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -35,15 +37,33 @@ names="$(xargs grep -ohE 'docs/images/[A-Za-z0-9_.-]+\.png' <<<"$linked" |
          sed 's|docs/images/||; s|\.png$||' | sort -u)"
 [[ -n "$names" ]] || { echo "No README links an image under docs/images/."; exit 0; }
 
+# The images with options of their own: NAME SCENE OPTION... (# starts a comment).
+declare -A own=()
+options_file=docs/images/render-options.txt
+if [[ -f "$options_file" ]]; then
+  while read -r image rest; do
+    [[ -z "$image" || "$image" == \#* ]] && continue
+    [[ -n "$rest" ]] || rt_die "$options_file: the image $image names no scene"
+    own["$image"]="$rest"
+  done <"$options_file"
+fi
+
 ((list_only)) || mkdir -p docs/images
 while read -r name; do
-  if ! grep -qx -- "$name" <<<"$scenes"; then
-    echo "skipped: docs/images/$name.png ($name is not a built-in scene)"
+  scene="$name"
+  args=("$@")
+  if [[ -v "own[$name]" ]]; then
+    read -r -a args <<<"${own[$name]}"
+    scene="${args[0]}"
+    args=("${args[@]:1}")
+  fi
+  if ! grep -qx -- "$scene" <<<"$scenes"; then
+    echo "skipped: docs/images/$name.png ($scene is not a built-in scene)"
   elif ((list_only)); then
-    echo "would render: docs/images/$name.png"
+    echo "would render: docs/images/$name.png (rt render $scene${args[*]:+ ${args[*]}})"
   else
     start="$(rt_now)"
-    "$rt" render "$name" -o "docs/images/$name.png" --quiet "$@"
+    "$rt" render "$scene" -o "docs/images/$name.png" --quiet "${args[@]}"
     echo "rendered docs/images/$name.png in $(rt_elapsed "$start")"
   fi
 done <<<"$names"
