@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -14,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "SameBits.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/DemoScenes.h"
@@ -25,9 +25,7 @@ namespace {
 using ::testing::StrEq;
 using ::testing::ThrowsMessage;
 
-bool sameBits(const Color& a, const Color& b) {
-  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
-}
+using test::sameBits;
 
 const DemoScene& demoEntry(std::string_view name) {
   for (const DemoScene& e : demoScenes())
