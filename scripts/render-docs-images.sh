@@ -3,15 +3,20 @@
 #
 #   scripts/render-docs-images.sh [--list] [RT_RENDER_OPTION]...
 #
-# docs/images/NAME.png is `rt render NAME --width 500`, for every built-in scene of the course's
-# stages 4 to 7 (the scenes of `rt list` that the ambient, phong, shadow or whitted tracer
-# renders). The READMEs show them, and a student checks a render against them exactly:
+# 1. The course's stages: docs/images/NAME.png is `rt render NAME --width 500`, for every built-in
+#    scene of stages 4 to 7 (the scenes of `rt list` that the ambient, phong, shadow or whitted
+#    tracer renders). The READMEs show them, and a student checks a render against them exactly:
 #
-#   rt render NAME --width 500 -o mine.png && rt compare mine.png docs/images/NAME.png
+#      rt render NAME --width 500 -o mine.png && rt compare mine.png docs/images/NAME.png
 #
-# The cli tests (ReferenceImageTests) render every one the same way and compare. Options given
-# replace --width 500 (the committed images are rendered without any). The mini projects' images
-# (the galaxy: sampled, and long to render) are made by the commands their READMEs give.
+#    The cli tests (ReferenceImageTests) render every one the same way and compare. Options given
+#    replace --width 500 (the committed images are rendered without any).
+# 2. The images with options of their own, listed in docs/images/render-options.txt (a line
+#    `IMAGE SCENE [RT_RENDER_OPTION]...`): the mini projects' scenes at their own sizes, an image
+#    with a --param, the galaxy with and without diffused glass. docs/images/IMAGE.png is
+#    `rt render SCENE` with that line's options only.
+# 3. The pictures of mini2_bvh's tree (bvh-top.png, bvh-leaves.png), drawn by mini2_bvh_picture,
+#    when the build has mini2_bvh.
 # A README link to an image of docs/images/ that does not exist is reported. --list prints what
 # would be rendered and renders nothing. Set RT_BUILD_DIR to build somewhere other than
 # build/release.
@@ -36,25 +41,60 @@ cmake --build "$build_dir" --target rt --parallel "$RT_JOBS" >/dev/null ||
 rt="$build_dir/bin/rt"
 [[ -x "$rt" ]] || rt_die "no rt program at $rt"
 
-# The course's scenes: those whose tracer (as their export records it) is one of stages 4-7. A
-# scene's line of rt list starts with its name; an indented line lists its parameters.
+# Renders docs/images/$1.png as rt render $2 with the options after them (or lists it).
+render() {
+  local image="$1" scene="$2"
+  shift 2
+  if ((list_only)); then
+    echo "would render: docs/images/$image.png (rt render $scene $*)"
+  else
+    local start
+    start="$(rt_now)"
+    "$rt" render "$scene" -o "docs/images/$image.png" --silent "$@"
+    echo "rendered docs/images/$image.png (rt render $scene $*) in $(rt_elapsed "$start")"
+  fi
+}
+
+# 1. The course's scenes: those whose tracer (as their export records it) is one of stages 4-7.
+# A scene's line of rt list starts with its name; an indented line lists its parameters.
+scenes="$("$rt" list | awk '/^[^ ]/ { print $1 }')"
 names=()
 while read -r name; do
   scene="$("$rt" export "$name")"
   [[ "$scene" =~ \"tracer\":\ \"(ambient|phong|shadow|whitted)\" ]] && names+=("$name")
-done < <("$rt" list | awk '/^[^ ]/ { print $1 }')
+done <<<"$scenes"
 ((${#names[@]})) || rt_die "rt list shows no scene of the course's stages"
 
 ((list_only)) || mkdir -p docs/images
 for name in "${names[@]}"; do
-  if ((list_only)); then
-    echo "would render: docs/images/$name.png (rt render $name ${options[*]})"
-  else
-    start="$(rt_now)"
-    "$rt" render "$name" -o "docs/images/$name.png" --silent "${options[@]}"
-    echo "rendered docs/images/$name.png (rt render $name ${options[*]}) in $(rt_elapsed "$start")"
-  fi
+  render "$name" "$name" "${options[@]}"
 done
+
+# 2. The images with options of their own: IMAGE SCENE OPTION... (# starts a comment). A scene
+# this build does not have (a course cut) is skipped, saying so.
+options_file=docs/images/render-options.txt
+if [[ -f "$options_file" ]]; then
+  while read -r image scene rest; do
+    [[ -z "$image" || "$image" == \#* ]] && continue
+    [[ -n "$scene" ]] || rt_die "$options_file: the image $image names no scene"
+    if ! grep -qx -- "$scene" <<<"$scenes"; then
+      echo "skipped: docs/images/$image.png ($scene is not a built-in scene of this build)"
+      continue
+    fi
+    read -r -a own <<<"$rest"
+    render "$image" "$scene" "${own[@]}"
+  done <"$options_file"
+fi
+
+# 3. The BVH's boxes over the galaxy.
+if cmake --build "$build_dir" --target mini2_bvh_picture --parallel "$RT_JOBS" >/dev/null 2>&1; then
+  if ((list_only)); then
+    echo "would draw: docs/images/bvh-top.png, docs/images/bvh-leaves.png (mini2_bvh_picture)"
+  else
+    "$build_dir/bin/mini2_bvh_picture" docs/images/bvh-top.png --depth 3
+    "$build_dir/bin/mini2_bvh_picture" docs/images/bvh-leaves.png
+  fi
+fi
 
 linked="$(git ls-files --cached --others --exclude-standard -- '*README.md' 2>/dev/null ||
           find . -name README.md -not -path './build*')"

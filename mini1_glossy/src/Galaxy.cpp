@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "CourseMaterial.h"
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
 #include "geometries/Sphere.h"
@@ -18,16 +19,6 @@ namespace {
   throw std::invalid_argument("galaxy: " + std::string(name) + " must be between " +
                               std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
                               std::to_string(value));
-}
-
-Material material(double kD, double kS, int shininess, double kT = 0, double kR = 0) {
-  Material m;
-  m.kD = Double3(kD);
-  m.kS = Double3(kS);
-  m.shininess = shininess;
-  m.kT = Double3(kT);
-  m.kR = Double3(kR);
-  return m;
 }
 
 /// The six faces of the box [lo, hi], each with its vertices counter-clockwise seen from

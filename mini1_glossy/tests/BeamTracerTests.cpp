@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <numbers>
 
+#include "SameBits.h"
 #include "camera/Camera.h"
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
@@ -17,9 +17,7 @@
 namespace rt {
 namespace {
 
-bool sameBits(const Color& a, const Color& b) {
-  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
-}
+using test::sameBits;
 
 /// Renders s through its camera at n x n pixels with tracer and the centre sampler.
 Image render(const SceneSetup<LitScene>& s, const RayTracer& tracer, int n, RayCounts* counts) {

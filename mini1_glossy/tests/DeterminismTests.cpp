@@ -3,9 +3,9 @@
 // it has in the whole image, and the seed changes the noise.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <memory>
 
+#include "SameBits.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
@@ -14,9 +14,7 @@
 namespace rt {
 namespace {
 
-bool sameBits(const Color& a, const Color& b) {
-  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
-}
+using test::sameBits;
 
 /// A small galaxy (7 arms of 12), with its glass blurring (beams), sized lights (soft shadows),
 /// seen from "inside" at 24 x 14 pixels.

@@ -12,10 +12,12 @@
 #include "RtProcess.h"
 #include "camera/CourseScenes.h"
 #include "cli/BuiltinScenes.h"
+#include "cli/CommandLine.h"
 #include "cli/Commands.h"
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
+#include "glossy/DemoScenes.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
 #include "reflections/CourseScenes.h"
@@ -56,9 +58,9 @@ std::vector<std::string> lines(const std::string& text) {
 
 TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   // TC01: the scene count is stage 4's one scene plus every entry of the stages' tables
-  // (and mini project 1's galaxy)
-  const std::size_t expected =
-      1 + lightingScenes().size() + shadowScenes().size() + reflectionScenes().size() + 1;
+  // (and mini project 1's galaxy and demonstration scenes)
+  const std::size_t expected = 1 + lightingScenes().size() + shadowScenes().size() +
+                               reflectionScenes().size() + 1 + demoScenes().size();
   EXPECT_EQ(builtinScenes().size(), expected);
   // TC02: every table entry is there under its own name, with its stage's tracer
   const auto expectEntries = [](std::span<const CourseScene> table, const char* tracer) {
@@ -102,6 +104,49 @@ TEST(BuiltinScenesTests, twoColorDocumentIsTheCourseScene) {
   EXPECT_EQ(doc.camera.nY, course.camera.nY);
   EXPECT_TRUE(doc.geometryNames.empty());
   EXPECT_EQ(nullptr, doc.findPart<NamedMaterials>());
+}
+
+TEST(BuiltinScenesTests, demoScenesCarryTheirRenderSettingsAndKnobs) {
+  const auto doc = [](const char* name, std::vector<std::string> params = {}) {
+    return makeBuiltinScene(*findBuiltinScene(name), params);
+  };
+  // TC01: mini project 1's demonstration scenes are rendered by the beams tracer with the render
+  // settings of their table entry
+  for (const DemoScene& e : demoScenes()) EXPECT_EQ(doc(e.course.name).render.tracer, "beams");
+  EXPECT_EQ(doc("antialiasing").render.samples, 4);
+  EXPECT_EQ(doc("depth-of-field").render.lensSamples, 24);
+  EXPECT_EQ(doc("depth-of-field").camera.aperture, 0.2);
+  EXPECT_TRUE(doc("adaptive").render.adaptive);
+  EXPECT_EQ(doc("adaptive").render.adaptiveDepth, 3);
+  // TC02: their knobs are their parameters, with the scene's values as defaults
+  std::string params;
+  for (const SceneParam& p : findBuiltinScene("super-sampling")->params)
+    params += p.name + "=" + p.defaultValue + " ";
+  EXPECT_EQ(params,
+            "glossyGrid=1 frostedGrid=1 shadowSamples=1 samples=1 lensSamples=1 aperture=0 "
+            "adaptive=off ");
+  // TC03: a parameter changes what it names
+  EXPECT_EQ(doc("antialiasing", {"samples=1"}).render.samples, 1);
+  EXPECT_FALSE(doc("adaptive", {"adaptive=off"}).render.adaptive);
+  EXPECT_EQ(doc("depth-of-field", {"aperture=0.05"}).camera.aperture, 0.05);
+  EXPECT_EQ(std::get<PointLight>(litScene(doc("soft-shadows", {"shadowSamples=4"})).lights[0])
+                .shadowSamples,
+            4);
+  // TC11: a value out of range, naming the parameter
+  const auto refused = [&](const char* name, const char* param) {
+    try {
+      (void)doc(name, {param});
+    } catch (const UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refused("antialiasing", "samples=0"),
+            "--param samples: expected an integer from 1 to 64, got '0'");
+  EXPECT_EQ(refused("depth-of-field", "aperture=-1"),
+            "--param aperture: expected a number from 0 to 1000, got -1");
+  EXPECT_EQ(refused("adaptive", "adaptive=maybe"),
+            "--param adaptive: expected on or off, got 'maybe'");
 }
 
 TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {

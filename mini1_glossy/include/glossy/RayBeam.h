@@ -34,8 +34,9 @@
 namespace rt {
 
 /// True when the centre of cell (i, j) of an N × N grid lies inside the grid's inscribed circle.
-/// In units of half a cell the centres sit at odd coordinates −N+1 … N−1 and the radius is N, so
-/// the test is on integers, exact (and never on the boundary: odd² + odd² ≠ N²).
+/// In units of half a cell the centres sit at 2i + 1 − N (−N+1 … N−1) and the radius is N, so the
+/// test is on integers, exact, and never on the boundary: for odd N the coordinates are even and
+/// N² is odd; for even N they are odd, and odd² + odd² ≡ 2 (mod 4) while N² ≡ 0.
 constexpr bool cellInBeam(int i, int j, int grid) noexcept {
   const int x = 2 * i + 1 - grid, y = 2 * j + 1 - grid;
   return x * x + y * y <= grid * grid;
