@@ -50,8 +50,8 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
   Double3 sum;
   const int count =
       forEachBeamRay(secondary.direction(), from.normal, beam, ctx.random, [&](const Vector& dir) {
-        const Color c =
-            WhittedTracer::secondaryColor(from, Ray::withUnitDirection(secondary.head(), dir), kind, level, kkx, ctx);
+        const Color c = WhittedTracer::secondaryColor(
+            from, Ray::withUnitDirection(secondary.head(), dir), kind, level, kkx, ctx);
         sum = sum + c.rgb();
       });
   return Color::unchecked(sum / count);

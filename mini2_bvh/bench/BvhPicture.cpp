@@ -35,11 +35,21 @@ Color depthColour(int depth, int deepest) {
   const double h = hue / 60, x = 1 - std::abs(std::fmod(h, 2.0) - 1);
   std::array<double, 3> rgb{};
   switch (static_cast<int>(h)) {
-    case 0: rgb = {1, x, 0}; break;
-    case 1: rgb = {x, 1, 0}; break;
-    case 2: rgb = {0, 1, x}; break;
-    case 3: rgb = {0, x, 1}; break;
-    default: rgb = {x, 0, 1}; break;
+    case 0:
+      rgb = {1, x, 0};
+      break;
+    case 1:
+      rgb = {x, 1, 0};
+      break;
+    case 2:
+      rgb = {0, 1, x};
+      break;
+    case 3:
+      rgb = {0, x, 1};
+      break;
+    default:
+      rgb = {x, 0, 1};
+      break;
   }
   return Color(255 * rgb[0], 255 * rgb[1], 255 * rgb[2]);
 }

@@ -19,7 +19,8 @@ std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geo
   if (name == "cbr") return std::make_unique<Cbr>(shapes);
   if (name == "none") return nullptr;
   std::string known;
-  for (std::string_view n : ACCELERATION_NAMES) known += (known.empty() ? "" : ", ") + std::string(n);
+  for (std::string_view n : ACCELERATION_NAMES)
+    known += (known.empty() ? "" : ", ") + std::string(n);
   throw std::invalid_argument("makeAcceleration: unknown acceleration '" + std::string(name) +
                               "' (known: " + known + ")");
 }

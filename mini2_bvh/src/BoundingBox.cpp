@@ -15,8 +15,10 @@ Aabb boxOfPoints(std::span<const Point> points) noexcept {
 }  // namespace
 
 Aabb boundingBox(const Sphere& s) noexcept {
+  // BEGIN SOLUTION: hint: boundingBox(Sphere), the centre -/+ r on every axis
   const Double3 r(s.radius());
   return Aabb(s.center().xyz() - r, s.center().xyz() + r);
+  // END SOLUTION
 }
 
 Aabb boundingBox(const Triangle& t) noexcept { return boxOfPoints(t.vertices()); }
@@ -24,6 +26,7 @@ Aabb boundingBox(const Triangle& t) noexcept { return boxOfPoints(t.vertices());
 Aabb boundingBox(const Polygon& p) noexcept { return boxOfPoints(p.vertices()); }
 
 Aabb boundingBox(const Cylinder& c) noexcept {
+  // BEGIN SOLUTION: hint: boundingBox(Cylinder), the two cap discs' boxes, r*sqrt(1 - a_i^2)
   const Double3& a = c.axis().direction().xyz();
   const Double3& bottom = c.axis().head().xyz();
   const Double3 top = bottom + a * c.height();
@@ -33,6 +36,7 @@ Aabb boundingBox(const Cylinder& c) noexcept {
   };
   const Double3 e(halfWidth(a.x), halfWidth(a.y), halfWidth(a.z));
   return Aabb(bottom - e, bottom + e).expand(Aabb(top - e, top + e));
+  // END SOLUTION
 }
 
 std::optional<Aabb> boundingBox(const Plane&) noexcept { return std::nullopt; }

@@ -19,6 +19,7 @@ Cbr::Cbr(std::span<const Geometry> shapes) : shapes_(shapes) {
 
 std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
+  // BEGIN SOLUTION: hint: Cbr::closestHit, a shape's exact test only when its box is hit
   NearestHit nearest(tMax);
   for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
   std::uint64_t tests = unbounded_.size();
@@ -34,9 +35,11 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
   }
   if (counts != nullptr) *counts += QueryCounts{tests, bounded_.size()};
   return nearest.hit();
+  // END SOLUTION
 }
 
 bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
+  // BEGIN SOLUTION: hint: Cbr::forEachHit, visit the hits of the shapes whose box is hit
   std::uint64_t tests = 0;
   bool complete = true;
   for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
@@ -56,6 +59,7 @@ bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
   }
   if (counts != nullptr) *counts += QueryCounts{tests, boxes};
   return complete;
+  // END SOLUTION
 }
 
 }  // namespace rt

@@ -55,6 +55,7 @@ void renderTiles(Shared& s, WorkerResult& result) noexcept {
   RayCounts counts;  // this thread's own: nothing is shared or atomic per ray
   std::uint64_t pixels = 0;
   try {
+    // BEGIN SOLUTION: hint: renderTiles, take the next tile until none is left or a stop
     const std::uint64_t tiles = s.grid.size();
     while (!s.shouldStop()) {
       const std::uint64_t index = s.nextTile.fetch_add(1, std::memory_order_relaxed);
@@ -75,6 +76,7 @@ void renderTiles(Shared& s, WorkerResult& result) noexcept {
       if (s.doneRays != nullptr)
         s.doneRays->fetch_add(counts.total() - raysBefore, std::memory_order_relaxed);
     }
+    // END SOLUTION
   } catch (...) {
     {
       const std::lock_guard lock(s.errorMutex);
@@ -116,8 +118,8 @@ RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const Pi
       static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(threads), grid.size()));
 
   const auto start = std::chrono::steady_clock::now();
-  Shared shared{camera,        tracer,       sampler,          image,
-                grid,          options.stop, options.donePixels, options.doneRays};
+  Shared shared{camera,          tracer, sampler, image, grid, options.stop, options.donePixels,
+                options.doneRays};
   std::vector<WorkerResult> results(static_cast<std::size_t>(threads));
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(threads - 1));

@@ -205,8 +205,8 @@ TEST(CommandTests, helpAndVersion) {
   r = run({"render", "--help"});
   EXPECT_EQ(r.code, 0);
   EXPECT_TRUE(r.out.starts_with("Usage: rt render SCENE [OPTIONS]\n")) << r.out;
-  for (const char* text : {"SCENE.png", "--width W", "--height H", "--tracer T", "--quiet", "--silent",
-                           "-o, --output FILE.png", "whitted", "130"})
+  for (const char* text : {"SCENE.png", "--width W", "--height H", "--tracer T", "--quiet",
+                           "--silent", "-o, --output FILE.png", "whitted", "130"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
   // TC04: the other commands' help
   for (const char* command : {"list", "probe", "export"}) {

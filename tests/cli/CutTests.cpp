@@ -41,14 +41,10 @@ std::string freshDirectory(const std::string& name) {
   return dir.string();
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-}
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 
 /// True when this build has the stage that adds the tracer (a tracer of the course).
-bool has(std::string_view tracer) {
-  return missingTracerStage(tracer).empty();
-}
+bool has(std::string_view tracer) { return missingTracerStage(tracer).empty(); }
 
 TEST(CutTests, theTracersAreThoseOfTheStagesPresent) {
   // TC01: rt's tracers are the scene format's, in the same order, and include stage 4's

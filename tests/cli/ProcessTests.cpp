@@ -121,8 +121,8 @@ TEST(RenderProcessTests, threadsAndAccelerationChangeNothingInTheImage) {
   const std::string dir = freshDirectory("renderThreadsAccel");
   // The galaxy (every kind of shape, beams, soft shadows), small: the reference is one thread
   // over the scene's own list, the course's renderer.
-  const std::vector<std::string> scene{"render", "galaxy", "--width", "48", "--height", "27",
-                                       "--silent"};
+  const std::vector<std::string> scene{"render",   "galaxy", "--width", "48",
+                                       "--height", "27",     "--silent"};
   const auto renderWith = [&](const std::string& name, std::vector<std::string> options) {
     std::vector<std::string> args = scene;
     args.insert(args.end(), {"-o", dir + "/" + name + ".png"});

@@ -209,7 +209,8 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, "
      "1e300, 0]]}]\n"
      "}\n",
-     "bad.json:4:51: geometries[0].vertices: Plane: the normal of the points (0,0,0), (1e+300,0,0), "
+     "bad.json:4:51: geometries[0].vertices: Plane: the normal of the points (0,0,0), "
+     "(1e+300,0,0), "
      "(0,1e+300,0) overflows (coordinates too large)"},
     // EP23: zero normal
     {"ZeroNormal",
@@ -302,7 +303,8 @@ const BadInput BAD_INPUTS[] = {
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
      "  \"render\": {\"tracer\": \"witted\"}\n"
      "}\n",
-     "bad.json:4:24: render.tracer: expected a tracer (ambient, phong, shadow, whitted, beams), got "
+     "bad.json:4:24: render.tracer: expected a tracer (ambient, phong, shadow, whitted, beams), "
+     "got "
      "\"witted\"; did you mean 'whitted'?"},
     // EP32: resolution beyond 2^15 per side
     {"AbsurdResolution",

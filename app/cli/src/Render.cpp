@@ -68,8 +68,8 @@ int render(const RenderArgs& args, const Io& io) {
     // The build's render loop (rows on this thread; tiles on a pool of threads from mini project
     // 2 on): it sees a stop request (Ctrl-C) within a block of pixels, adds each block's counts
     // once and reports its pixels and rays to the progress thread once.
-    outcome = registry.render({camera, *tracer, *sampler, image, doc.render.threads, io.stop,
-                               donePixels, doneRays});
+    outcome = registry.render(
+        {camera, *tracer, *sampler, image, doc.render.threads, io.stop, donePixels, doneRays});
     // A Ctrl-C that arrives after the last block still means "stop": nothing is written.
     interrupted = outcome.interrupted || (io.stop && io.stop->load());
   }  // the progress thread is stopped here, before anything else is printed

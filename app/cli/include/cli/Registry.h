@@ -10,8 +10,8 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -76,7 +76,7 @@ struct RenderJob {
 
 /// What the options a stage adds to render and probe set (unset: the scene's render settings).
 struct SettingOverrides {
-  std::optional<int> threads;       ///< --threads (mini project 2)
+  std::optional<int> threads;        ///< --threads (mini project 2)
   std::optional<std::string> accel;  ///< --accel (mini project 2)
 };
 

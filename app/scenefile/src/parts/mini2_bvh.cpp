@@ -10,8 +10,9 @@ void registerFormat_mini2_bvh(SceneFormat& format) {
   format.attach<R>("render", "accel", [](const Node& n, R& r) {
     r.accel = readChoice(n, "an acceleration", ACCELERATION_NAMES);
   });
-  format.attach<R>("render", "threads",
-                   [](const Node& n, R& r) { r.threads = readInteger(n, 0, RenderOptions::MAX_THREADS); });
+  format.attach<R>("render", "threads", [](const Node& n, R& r) {
+    r.threads = readInteger(n, 0, RenderOptions::MAX_THREADS);
+  });
   format.writeDocument.push_back([](const SceneDocument& doc, Json& j) {
     const RenderSettings d;
     Json& render = j["render"];
