@@ -8,8 +8,12 @@
 // The surface-area heuristic (Goldsmith and Salmon 1987, MacDonald and Booth 1990): a ray that
 // meets a node's box B meets a child's box B' inside it with probability SA(B')/SA(B), so
 //
-//     cost(split) = C_trav + (SA(L)·n_L + SA(R)·n_R) / SA(B)      (in units of one shape test)
-//     cost(leaf)  = n
+//     cost(split) = C_trav + (SA(L)·c_L + SA(R)·c_R) / SA(B)      (in units of one sphere test)
+//     cost(leaf)  = c
+//
+// where c is the sum of the primitives' test costs: 1 for a sphere, Bvh::SHAPE_COST for any other
+// shape (a polygon's test costs several sphere tests; counting it as one would leave polygons
+// in large leaves whose boxes every ray meets).
 //
 // and a node is split where cost(split) is lowest, if it is below cost(leaf). The candidate
 // splits are the borders of BINS equal bins over the centroids' extent on each axis (Wald 2007):
@@ -36,6 +40,9 @@ struct BuildRecord {
   bool sphere;  ///< kept here so that making a leaf never reads the (large) shapes again
 };
 static_assert(sizeof(BuildRecord) == 32, "a build record is 32 bytes");
+
+/// What testing a record's shape costs the SAH, in sphere tests.
+double testCost(const BuildRecord& r) noexcept { return r.sphere ? 1.0 : Bvh::SHAPE_COST; }
 
 /// A record's centroid on an axis: 0.5·lo + 0.5·hi (halved first, so no sum overflows). Every
 /// record's box is finite (see the constructor), so every centroid is.
@@ -81,6 +88,7 @@ struct Binning {
 struct Bin {
   FloatBox box;
   std::uint32_t count;
+  double cost;  ///< the sum of its records' testCost
 };
 
 /// Where to split a range, or that it becomes a leaf; with the bounds of both sides.
@@ -128,8 +136,10 @@ class Builder {
 
   Split chooseSplit(std::uint32_t begin, std::uint32_t end, const Bounds& bounds, int depth) {
     const std::uint32_t n = end - begin;
-    // A split costs at least C_trav·SA(box), a leaf n·SA(box): n <= C_trav never splits.
-    if (n <= Bvh::TRAVERSAL_COST && n <= Bvh::MAX_LEAF_SIZE) return Split{};
+    // A split costs at least C_trav·SA(box), a leaf (its test costs)·SA(box): a range whose
+    // tests cost no more than C_trav never splits. (Each test costs at least 1: n > C_trav does
+    // not qualify, and needs no sum.)
+    if (n <= Bvh::TRAVERSAL_COST && testCosts(begin, end) <= Bvh::TRAVERSAL_COST) return Split{};
     // A few centroids need no more bins than they are.
     const int bins = static_cast<int>(std::min<std::uint32_t>(Bvh::BINS, n));
     std::array<Binning, 3> binnings;
@@ -161,13 +171,14 @@ class Builder {
                  const std::array<Binning, 3>& binnings, int used) {
     std::array<std::array<Bin, Bvh::BINS>, 3> bins;
     for (auto& axis : bins)
-      for (int b = 0; b < used; ++b) axis[b] = Bin{FloatBox::empty(), 0};
+      for (int b = 0; b < used; ++b) axis[b] = Bin{FloatBox::empty(), 0, 0};
     for (std::uint32_t i = begin; i < end; ++i) {
       const BuildRecord& r = records_[i];
       const std::array<float, 3> c{centroid(r, 0), centroid(r, 1), centroid(r, 2)};
       for (int a = 0; a < 3; ++a) {  // (an axis of scale 0 puts all in bin 0, unused)
         Bin& bin = bins[a][binnings[a].bin(c[a])];
         ++bin.count;
+        bin.cost += testCost(r);
         bin.box.expand(r.box);
       }
     }
@@ -177,22 +188,22 @@ class Builder {
     int bestAxis = -1, bestBorder = 0;  // border b: bins 0..b on the left
     for (int a = 0; a < 3; ++a) {
       if (binnings[a].scale == 0) continue;
-      std::array<double, Bvh::BINS> rightCost{};  // rightCost[b]: SA·count of bins b..last
+      std::array<double, Bvh::BINS> rightCost{};  // rightCost[b]: SA·cost of bins b..last
       FloatBox right = FloatBox::empty();
-      std::uint32_t rightCount = 0;
+      double rightTests = 0;
       for (int b = used - 1; b > 0; --b) {
-        rightCount += bins[a][b].count;
+        rightTests += bins[a][b].cost;
         right.expand(bins[a][b].box);
-        if (bins[a][b - 1].count > 0) rightCost[b] = rightCount * right.widen().surfaceArea();
+        if (bins[a][b - 1].count > 0) rightCost[b] = rightTests * right.widen().surfaceArea();
       }
       FloatBox left = FloatBox::empty();
-      std::uint32_t leftCount = 0;
+      double leftTests = 0;
       for (int b = 0; b < used - 1; ++b) {
-        leftCount += bins[a][b].count;
+        leftTests += bins[a][b].cost;
         left.expand(bins[a][b].box);
         if (bins[a][b].count == 0) continue;  // border b splits as border b - 1 does
         // Both sides are non-empty: bin 0 holds the lowest centroid, the last bin the highest.
-        const double cost = leftCount * left.widen().surfaceArea() + rightCost[b + 1];
+        const double cost = leftTests * left.widen().surfaceArea() + rightCost[b + 1];
         if (bestAxis < 0 || cost < bestCost) {
           bestCost = cost;
           bestAxis = a;
@@ -201,8 +212,10 @@ class Builder {
       }
     }
     const std::uint32_t n = end - begin;
+    double leafCost = 0;  // every record is in one bin of each axis
+    for (int b = 0; b < used; ++b) leafCost += bins[0][b].cost;
     const double area = bounds.box.widen().surfaceArea();
-    const bool splitPays = Bvh::TRAVERSAL_COST * area + bestCost < n * area;
+    const bool splitPays = Bvh::TRAVERSAL_COST * area + bestCost < leafCost * area;
     if (!splitPays && n <= Bvh::MAX_LEAF_SIZE) return Split{};
     // The children's boxes are the unions of their bins' boxes; their centroids' boxes are
     // gathered while the records are partitioned.
@@ -250,6 +263,12 @@ class Builder {
 
   Split splitAt(std::uint32_t begin, std::uint32_t end, std::uint32_t mid, int axis) const {
     return Split{false, axis, mid, boundsOf(begin, mid), boundsOf(mid, end)};
+  }
+
+  double testCosts(std::uint32_t begin, std::uint32_t end) const {
+    double sum = 0;
+    for (std::uint32_t i = begin; i < end; ++i) sum += testCost(records_[i]);
+    return sum;
   }
 
   Bounds boundsOf(std::uint32_t begin, std::uint32_t end) const {
