@@ -32,6 +32,7 @@ std::size_t Bvh::memoryBytes() const noexcept {
 template <typename Limit, typename Leaf>
 bool Bvh::traverse(const Ray& ray, const Limit& limit, const Leaf& leaf,
                    std::uint64_t& nodesVisited) const {
+  // BEGIN SOLUTION: hint: Bvh::traverse, the stack walk, near child first
   if (nodes_.empty()) return true;
   const SlabRay slab(ray);
   // Pending second choices; at most one per level above the current node, and no leaf is deeper
@@ -57,6 +58,7 @@ bool Bvh::traverse(const Ray& ray, const Limit& limit, const Leaf& leaf,
     if (top == 0) return true;
     current = stack[--top];
   }
+  // END SOLUTION
 }
 
 template <typename F>
@@ -78,6 +80,7 @@ bool Bvh::forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& f) cons
 
 std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
+  // BEGIN SOLUTION: hint: Bvh::closestHit, unbounded shapes, then the walk, bound min(limit, t)
   NearestHit nearest(tMax);
   for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
   std::uint64_t tests = unbounded_.size(), visited = 0;
@@ -97,9 +100,11 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
     counts->nodesVisited += visited;
   }
   return nearest.hit();
+  // END SOLUTION
 }
 
 bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
+  // BEGIN SOLUTION: hint: Bvh::forEachHit, every hit within tMax until the visitor says stop
   std::uint64_t tests = 0, visited = 0;
   bool complete = true;
   for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
@@ -123,6 +128,7 @@ bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
     counts->nodesVisited += visited;
   }
   return complete;
+  // END SOLUTION
 }
 
 }  // namespace rt

@@ -169,6 +169,7 @@ class Builder {
   /// The binned SAH with `used` bins over the axes along which the centroids spread.
   Split sahSplit(std::uint32_t begin, std::uint32_t end, const Bounds& bounds,
                  const std::array<Binning, 3>& binnings, int used) {
+    // BEGIN SOLUTION: hint: sahSplit, bin the centroids, sweep for the cheapest border
     std::array<std::array<Bin, Bvh::BINS>, 3> bins;
     for (auto& axis : bins)
       for (int b = 0; b < used; ++b) axis[b] = Bin{FloatBox::empty(), 0, 0};
@@ -228,6 +229,7 @@ class Builder {
     // Both sides hold a record (see above); the median is only a guard against the impossible.
     if (split.mid == begin || split.mid == end) return medianSplit(begin, end, bestAxis);
     return split;
+    // END SOLUTION
   }
 
   /// Moves the records of [begin, end) whose centroid c on axis has isLeft(c) to the front,

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "cli/Registry.h"
 #include "lighting/CourseScenes.h"
@@ -16,11 +17,15 @@ inline void addCourseScenes(CliRegistry& registry, std::span<const CourseScene> 
                             std::string_view stage, std::string_view tracer) {
   for (const CourseScene& entry : table) {
     auto make = entry.make;
-    registry.scenes.push_back({entry.name, entry.description, std::string(stage),
-                               std::string(tracer), {},
+    registry.scenes.push_back({entry.name,
+                               entry.description,
+                               std::string(stage),
+                               std::string(tracer),
+                               {},
                                [make, t = std::string(tracer)](const SceneParams&) {
-                                 const SceneSetup<LitScene> setup = make();
-                                 SceneDocument doc = litDocument(setup.scene, setup.camera);
+                                 SceneSetup<LitScene> setup = make();
+                                 SceneDocument doc =
+                                     litDocument(std::move(setup.scene), setup.camera);
                                  doc.render.tracer = t;
                                  return doc;
                                }});

@@ -4,6 +4,7 @@
 // glossy/DemoScenes.h with their knobs as parameters.
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/CommandLine.h"
@@ -42,8 +43,8 @@ SceneDocument galaxyDocument(const SceneParams& p) {
       parseInt(p.at("stars"), "--param stars", 0, static_cast<int>(GalaxyParams::MAX_STARS));
   params.diffusion = parseOnOff(p.at("diffusion"), "diffusion");
   params.seed = static_cast<std::uint64_t>(parseInt(p.at("layout"), "--param layout", 0, INT_MAX));
-  const GalaxySetup g = galaxy(params);
-  SceneDocument doc = litDocument(g.scene, g.camera);
+  GalaxySetup g = galaxy(params);
+  SceneDocument doc = litDocument(std::move(g.scene), g.camera);
   for (const NamedView& v : g.views) doc.views.push_back(v);
   doc.render.tracer = "beams";
   return doc;
@@ -73,7 +74,7 @@ SceneDocument demoDocument(const DemoScene& entry, const SceneParams& p) {
       throw UsageError("--param " + std::string(e.what()));
     }
   }
-  SceneDocument doc = litDocument(setup.scene, setup.camera);
+  SceneDocument doc = litDocument(std::move(setup.scene), setup.camera);
   const SamplingSettings& s = setup.sampling;
   doc.render.tracer = "beams";
   doc.render.samples = s.samples;

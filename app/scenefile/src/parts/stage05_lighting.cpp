@@ -48,9 +48,9 @@ const std::string* materialNameOf(const SceneDocument& doc, std::uint32_t i) {
   return &*m->rowNames[row];
 }
 
-SceneDocument litDocument(const LitScene& scene, const CameraSpec& camera) {
+SceneDocument litDocument(LitScene scene, const CameraSpec& camera) {
   SceneDocument doc;
-  doc.scene = std::make_shared<LitScene>(scene);
+  doc.scene = std::make_shared<LitScene>(std::move(scene));
   doc.camera = camera;
   return doc;
 }
