@@ -51,11 +51,13 @@ function(rt_add_stage_library target)
 endfunction()
 
 # rt_app_stage_parts(<target> DIRECTORY <dir> NAMESPACE <ns> REGISTRY <class> FUNCTION <name>):
-# adds to target the file <dir>/<stage folder>.cpp of every stage built that has one, links every
-# stage library built, and generates a source that defines, in namespace <ns>,
+# adds to target the file <dir>/<stage folder>.cpp of every stage built that has one, and the
+# sources <dir>/<stage folder>/*.cpp that such a part may keep beside it when it grows (mini2's
+# `rt bench`), links every stage library built, and generates a source that defines, in
+# namespace <ns>,
 #   void <name>(<class>& registry)
 # calling <name>_<stage folder>(registry) for each of those stages, in course order. So a stage's
-# contribution to the app is a file named after the stage: no #if anywhere.
+# contribution to the app is a file (and a folder) named after the stage: no #if anywhere.
 function(rt_app_stage_parts target)
   cmake_parse_arguments(ARG "" "DIRECTORY;NAMESPACE;REGISTRY;FUNCTION" "" ${ARGN})
   get_property(folders GLOBAL PROPERTY RT_STAGE_FOLDERS)
@@ -65,6 +67,8 @@ function(rt_app_stage_parts target)
   foreach(folder IN LISTS folders)
     if(EXISTS "${ARG_DIRECTORY}/${folder}.cpp")
       target_sources(${target} PRIVATE "${ARG_DIRECTORY}/${folder}.cpp")
+      file(GLOB more CONFIGURE_DEPENDS "${ARG_DIRECTORY}/${folder}/*.cpp")
+      target_sources(${target} PRIVATE ${more})
       string(APPEND declarations "void ${ARG_FUNCTION}_${folder}(${ARG_REGISTRY}& registry);\n")
       string(APPEND calls "  ${ARG_FUNCTION}_${folder}(registry);\n")
     endif()

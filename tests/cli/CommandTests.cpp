@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "InProcess.h"
 #include "RtProcess.h"
 #include "camera/CourseScenes.h"
 #include "cli/BuiltinScenes.h"
@@ -33,23 +34,9 @@
 namespace rt::cli {
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = runRt(args, Io{out, err});
-  return {code, out.str(), err.str()};
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
+using test::lines;
+using test::Outcome;
+using test::run;
 
 // ---------------------------------------------------------------------------------------------
 // The built-in scenes
