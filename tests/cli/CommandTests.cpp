@@ -285,6 +285,17 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
   }
 }
 
+TEST(CommandTests, aParamTakesOneValueAndLeavesTheSceneArgumentAlone) {
+  // TC01: export: --param before the scene's name is the same as after it
+  const Outcome before = run({"export", "--param", "arms=3", "galaxy"});
+  EXPECT_EQ(before.code, 0) << before.err;
+  EXPECT_EQ(before.out, run({"export", "galaxy", "--param", "arms=3"}).out);
+  // TC02: the scene options of render and probe: the same
+  const Outcome probe = run({"probe", "--param", "arms=3", "galaxy", "--pixel", "0,0"});
+  EXPECT_EQ(probe.code, 0) << probe.err;
+  EXPECT_EQ(probe.out, run({"probe", "galaxy", "--param", "arms=3", "--pixel", "0,0"}).out);
+}
+
 TEST(CommandTests, defaultOutputPath) {
   // TC01: a built-in scene: NAME.png in the current directory
   EXPECT_EQ(defaultOutputPath("two-color"), "two-color.png");
