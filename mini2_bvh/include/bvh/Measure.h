@@ -84,9 +84,9 @@ std::optional<std::int64_t> runInChildProcess(const std::function<void(std::span
 
 /// runInChildProcess for a work that returns a value that can be copied as bytes.
 template <typename T>
-  requires std::is_trivially_copyable_v<T> && std::is_default_constructible_v<T>
-std::optional<ChildMeasurement<T>> measureInChildProcess(const std::function<T()>& work,
-                                                         const std::atomic<bool>* stop = nullptr) {
+requires std::is_trivially_copyable_v<T> && std::is_default_constructible_v<T>
+    std::optional<ChildMeasurement<T>> measureInChildProcess(
+        const std::function<T()>& work, const std::atomic<bool>* stop = nullptr) {
   ChildMeasurement<T> m{};
   const std::optional<std::int64_t> peak = runInChildProcess(
       [&work](std::span<std::byte> out) {
