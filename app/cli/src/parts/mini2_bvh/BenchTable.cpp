@@ -2,6 +2,7 @@
 #include "BenchTable.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <sstream>
@@ -104,7 +105,7 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
                             {"primary", r.counts.primary},
                             {"secondary", r.counts.secondary},
                             {"shadow", r.counts.shadow},
-                            {"raysPerSecond", jsonNumber(r.raysPerSecond())},
+                            {"raysPerSecond", jsonNumber(std::round(r.raysPerSecond()))},
                             {"nodesPerRay", jsonNumber(r.nodesPerRay())},
                             {"speedup", jsonNumber(table.speedup(r))},
                             {"seedSeconds", r.seedSeconds ? jsonNumber(*r.seedSeconds) : Json()}});
@@ -121,8 +122,8 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
         out += csvField(r.name) + "," + csvField(r.tracer) + "," + csvField(r.accel) + "," +
                std::to_string(r.threads) + "," + shortest(r.seconds) + "," +
                std::to_string(r.counts.primary) + "," + std::to_string(r.counts.secondary) + "," +
-               std::to_string(r.counts.shadow) + "," + shortest(r.raysPerSecond()) + "," +
-               shortest(r.nodesPerRay()) + "," + shortest(table.speedup(r)) + "," +
+               std::to_string(r.counts.shadow) + "," + shortest(std::round(r.raysPerSecond())) +
+               "," + shortest(r.nodesPerRay()) + "," + shortest(table.speedup(r)) + "," +
                (r.seedSeconds ? shortest(*r.seedSeconds) : std::string()) + "\n";
       return out;
     }
