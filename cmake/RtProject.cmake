@@ -55,7 +55,9 @@ endfunction()
 # stage library built, and generates a source that defines, in namespace <ns>,
 #   void <name>(<class>& registry)
 # calling <name>_<stage folder>(registry) for each of those stages, in course order. So a stage's
-# contribution to the app is a file named after the stage: no #if anywhere.
+# contribution to the app is a file named after the stage: no #if anywhere. A part that grows
+# keeps more sources in a folder of the same name, listed by the app's CMakeLists.txt under
+# `if(TARGET <stage library>)`.
 function(rt_app_stage_parts target)
   cmake_parse_arguments(ARG "" "DIRECTORY;NAMESPACE;REGISTRY;FUNCTION" "" ${ARGN})
   get_property(folders GLOBAL PROPERTY RT_STAGE_FOLDERS)

@@ -17,96 +17,25 @@
 // 2. Stars: galaxies of n stars (GalaxyParams::stars), without diffusion, seen at 400 x 400 (the
 //    middle of the seed's view): the generation time of the scene and the build time and size of
 //    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
-//    and N threads (medians of R renders, alternately), and the process's peak resident size so
-//    far (getrusage's ru_maxrss: the sizes run in increasing order, so the figure after n stars
-//    is that galaxy's peak).
+//    and N threads (medians of R renders, alternately), and the peak resident size of a process
+//    that did only that (each galaxy is measured in a child process of its own: bvh/Measure.h).
 // A timing is never a test: this prints figures, it asserts nothing.
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <functional>
-#include <memory>
 #include <queue>
 #include <string>
 #include <vector>
 
-#include "bvh/Bvh.h"
+#include "bvh/Measure.h"
 #include "bvh/TileGrid.h"
 #include "bvh/TilePool.h"
 #include "camera/Camera.h"
-#include "glossy/BeamTracer.h"
-#include "glossy/Galaxy.h"
 
 namespace rt {
 namespace {
-
-/// The CPU time of the whole process (every thread), user and system, in seconds.
-double processCpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  auto seconds = [](const timeval& t) {
-    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
-  };
-  return seconds(u.ru_utime) + seconds(u.ru_stime);
-}
-
-/// The CPU time of the calling thread, in seconds: a tile's cost, whatever else the machine runs.
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-/// The process's peak resident size so far, in MB (ru_maxrss is in kB on Linux).
-double peakMb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
-
-/// A galaxy ready to render: the scene, its BVH, the beams tracer through it. Not movable: the
-/// BVH and the tracer refer to the scene.
-struct GalaxyRender {
-  GalaxySetup setup;
-  double generateSeconds = 0, buildSeconds = 0;  ///< this thread's CPU time
-  std::unique_ptr<Bvh> bvh;
-  std::unique_ptr<BeamTracer> tracer;
-
-  explicit GalaxyRender(const GalaxyParams& params) {
-    double start = threadCpuSeconds();
-    setup = galaxy(params);
-    generateSeconds = threadCpuSeconds() - start;
-    start = threadCpuSeconds();
-    bvh = std::make_unique<Bvh>(setup.scene.geometries);
-    buildSeconds = threadCpuSeconds() - start;
-    tracer = std::make_unique<BeamTracer>(setup.scene, bvh.get());
-  }
-  GalaxyRender(const GalaxyRender&) = delete;
-  GalaxyRender& operator=(const GalaxyRender&) = delete;
-};
-
-/// The seed's view at nX x nY; a square image shows the middle of it (the view plane cut to the
-/// image's shape, so that pixels stay square).
-Camera seedView(const GalaxySetup& g, int nX, int nY) {
-  CameraSpec spec = g.camera;
-  if (nX * spec.vpHeight < nY * spec.vpWidth)
-    spec.vpWidth = spec.vpHeight * nX / nY;
-  else
-    spec.vpHeight = spec.vpWidth * nY / nX;
-  spec.nX = nX;
-  spec.nY = nY;
-  return spec.builder().build();
-}
 
 /// The command line's choices.
 struct BenchOptions {
@@ -214,23 +143,39 @@ void scaling(const char* name, bool diffusion, int nX, int nY, const BenchOption
   tileBalance(camera, *g.tracer, o.threads);
 }
 
+/// One galaxy's row of the stars table, measured in a child process of its own.
+struct StarsRow {
+  std::uint32_t shapes = 0;
+  double generateSeconds = 0, buildSeconds = 0;
+  std::size_t bvhBytes = 0;
+  Comparison comparison;
+};
+
 void stars(const std::vector<long>& sizes, const BenchOptions& o) {
   std::printf(
       "\nGalaxies of n stars, no diffusion, 400 x 400, beams tracer through the BVH; render "
-      "times are medians of %d, alternately on 1 and %d threads, tiles of %d\n",
+      "times are medians of %d, alternately on 1 and %d threads, tiles of %d; each galaxy in a "
+      "process of its own (peak: its ru_maxrss)\n",
       o.repeat, o.threads, o.tileSize);
   std::printf("%8s %8s %10s %8s %7s %10s %10s %10s %9s %9s %8s\n", "stars", "shapes", "generate s",
               "build s", "BVH MB", "1 thr cpu", "1 thr wall", "N thr wall", "speed-up", "rays",
               "peak MB");
   for (const long n : sizes) {
-    const GalaxyRender g(GalaxyParams{.stars = n, .diffusion = false});
-    const Camera camera = seedView(g.setup, 400, 400);
-    const Comparison c = compareThreads(camera, *g.tracer, o);
+    const auto measured = measureInChildProcess<StarsRow>([n, &o] {
+      const GalaxyRender g(GalaxyParams{.stars = n, .diffusion = false});
+      const Camera camera = seedView(g.setup, 400, 400);
+      return StarsRow{g.setup.scene.geometries.size(), g.generateSeconds, g.buildSeconds,
+                      g.bvh->memoryBytes(), compareThreads(camera, *g.tracer, o)};
+    });
+    const StarsRow& r = measured->value;
+    const Comparison& c = r.comparison;
     std::printf("%8ld %8u %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
-                g.setup.scene.geometries.size(), g.generateSeconds, g.buildSeconds,
-                static_cast<double>(g.bvh->memoryBytes()) / 1e6, c.cpu[0], c.wall[0], c.wall[1],
-                c.speedUp(), static_cast<unsigned long long>(c.counts[0].total()), peakMb(),
+                r.shapes, r.generateSeconds, r.buildSeconds, static_cast<double>(r.bvhBytes) / 1e6,
+                c.cpu[0], c.wall[0], c.wall[1], c.speedUp(),
+                static_cast<unsigned long long>(c.counts[0].total()),
+                static_cast<double>(measured->peakBytes) / (1024.0 * 1024.0),
                 c.sameImage ? "" : "  DIFFERENT IMAGES");
+    std::fflush(stdout);
   }
 }
 
@@ -273,7 +218,6 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::sort(sizes.begin(), sizes.end());  // increasing, so that the peak after n is n's
   if (scaling) {
     rt::scaling("Galaxy without diffusion", false, 1280, 720, options);
     rt::scaling("Galaxy with diffusion (beams of 10 x 10 rays)", true, 256, 144, options);

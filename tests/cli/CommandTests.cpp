@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "InProcess.h"
 #include "RtProcess.h"
 #include "camera/CourseScenes.h"
 #include "cli/BuiltinScenes.h"
@@ -35,23 +36,9 @@
 namespace rt::cli {
 namespace {
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = runRt(args, Io{out, err});
-  return {code, out.str(), err.str()};
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
+using test::lines;
+using test::Outcome;
+using test::run;
 
 // ---------------------------------------------------------------------------------------------
 // The built-in scenes
@@ -341,6 +328,17 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
     EXPECT_EQ(r.err, c.message) << c.partition;
     EXPECT_EQ(r.out, "") << c.partition;
   }
+}
+
+TEST(CommandTests, aParamTakesOneValueAndLeavesTheSceneArgumentAlone) {
+  // TC01: export: --param before the scene's name is the same as after it
+  const Outcome before = run({"export", "--param", "arms=3", "galaxy"});
+  EXPECT_EQ(before.code, 0) << before.err;
+  EXPECT_EQ(before.out, run({"export", "galaxy", "--param", "arms=3"}).out);
+  // TC02: the scene options of render and probe: the same
+  const Outcome probe = run({"probe", "--param", "arms=3", "galaxy", "--pixel", "0,0"});
+  EXPECT_EQ(probe.code, 0) << probe.err;
+  EXPECT_EQ(probe.out, run({"probe", "galaxy", "--param", "arms=3", "--pixel", "0,0"}).out);
 }
 
 TEST(CommandTests, defaultOutputPath) {

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "InProcess.h"
 #include "camera/ImageWriter.h"
 #include "cli/BuiltinScenes.h"
 #include "cli/Commands.h"
@@ -23,16 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code;
-  std::string out, err;
-};
-
-Outcome run(std::vector<std::string> args) {
-  std::ostringstream out, err;
-  const int code = runRt(args, Io{out, err});
-  return {code, out.str(), err.str()};
-}
+using test::Outcome;
+using test::run;
 
 std::string freshDirectory(const std::string& name) {
   const fs::path dir = fs::path("cli-test-output") / ("cut-" + name);
@@ -143,6 +135,20 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   EXPECT_EQ(2, typo.code);
   EXPECT_NE(std::string::npos, typo.err.find("backgroud: unknown key; did you mean 'background'?"))
       << typo.err;
+}
+
+TEST(CutTests, benchIsMiniProject2sCommand) {
+  if (cliRegistry().makeAccelerator) {
+    // TC01: with mini project 2 (the accelerations it adds), rt has the bench
+    const Outcome r = run({"bench", "--help"});
+    EXPECT_EQ(0, r.code) << r.err;
+    EXPECT_TRUE(r.out.starts_with("Usage: rt bench [SCENE] [OPTIONS]\n")) << r.out;
+  } else {
+    // TC02: in a cut before it, no such command (with --help, rt's own help would answer)
+    const Outcome r = run({"bench"});
+    EXPECT_EQ(2, r.code);
+    EXPECT_EQ("rt: unknown command 'bench' (see rt --help)\n", r.err);
+  }
 }
 
 }  // namespace

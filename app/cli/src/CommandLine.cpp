@@ -71,7 +71,7 @@ class HelpFormatter : public CLI::FormatterBase {
       os << "Usage: " << commandLabel(*app);
       for (const CLI::Option* p :
            app->get_options([](const CLI::Option* o) { return o->get_positional(); }))
-        os << ' ' << p->get_name();
+        os << ' ' << (p->get_default_str().empty() ? p->get_name() : "[" + p->get_name() + "]");
       os << " [OPTIONS]\n\n" << app->get_description() << "\n";
     }
     std::vector<std::pair<std::string, std::string>> options;
@@ -211,9 +211,11 @@ void checkWhatIsLeft(const CLI::App& program, const CLI::App* command,
     throw UsageError("unexpected argument '" + arg + "' for " + commandLabel(*command) +
                      seeHelp(*command));
   }
+  // A positional argument with a default (CLI11's default_str, shown in the help as [NAME]) may
+  // be left out: `rt bench` is `rt bench galaxy`.
   for (const CLI::Option* p :
        command->get_options([](const CLI::Option* o) { return o->get_positional(); }))
-    if (p->count() == 0)
+    if (p->count() == 0 && p->get_default_str().empty())
       throw UsageError("missing " + p->get_name() + " for " + commandLabel(*command) +
                        seeHelp(*command));
 }

@@ -23,6 +23,9 @@ struct BuiltinScene;
 /// (hint)".
 const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view hint);
 
+/// Adds --param NAME=VALUE (repeatable, one value each) to command, bound to into.
+CLI::Option* addParamOption(CLI::App& command, std::vector<std::string>& into);
+
 /// The scene argument and the options that change the scene, which render and probe share.
 struct SceneArguments {
   std::string argument;  ///< SCENE as given: a built-in scene's name or a .json scene file

@@ -130,13 +130,19 @@ std::string defaultOutputPath(std::string_view scene) {
   return std::filesystem::path(scene).stem().string() + ".png";
 }
 
+CLI::Option* addParamOption(CLI::App& command, std::vector<std::string>& into) {
+  return command
+      .add_option("--param", into,
+                  "a built-in scene's parameter, NAME=VALUE (repeatable; see rt list)")
+      ->type_name("NAME=VALUE")
+      // One NAME=VALUE per --param: `--param arms=3 galaxy` leaves SCENE alone.
+      ->allow_extra_args(false);
+}
+
 void addSceneArguments(CLI::App& command, SceneArguments& into, const std::string& widthHelp,
                        const std::string& heightHelp, const std::string& tracerHelp) {
   command.add_option("SCENE", into.argument, "a built-in scene's name or a .json scene file");
-  command
-      .add_option("--param", into.params,
-                  "a built-in scene's parameter, NAME=VALUE (repeatable; see rt list)")
-      ->type_name("NAME=VALUE");
+  addParamOption(command, into.params);
   addOptional(command, "--view", into.view, "one of the scene's named views (its cameras)", "NAME");
   addOptional(command, "--width", into.width, widthHelp, "W")
       ->transform(integerValidator(1, Image::MAX_SIDE));

@@ -42,10 +42,7 @@ void addExportCommand(CommandLine& rt) {
       "(cmake --build BUILD --target export-scenes refreshes them).\n",
       exportScene);
   command->add_option("NAME", args->name, "a built-in scene's name");
-  command
-      ->add_option("--param", args->params,
-                   "a built-in scene's parameter, NAME=VALUE (repeatable; see rt list)")
-      ->type_name("NAME=VALUE");
+  addParamOption(*command, args->params);
   addOptional(*command, "-o,--output", args->output, "where to write it (default: standard output)",
               "FILE.json");
 }

@@ -14,6 +14,8 @@
 /// - an argument that starts with '-' and a digit is a value, never an option (`-1`), and "-"
 ///   alone is a value;
 /// - `--` ends the options: everything after it is positional;
+/// - a positional argument is required, unless it has a default (CLI11's default_str, which the
+///   help shows as [NAME]);
 /// - a flag takes no value (`--quiet=yes` is refused), but may be repeated;
 /// - `-h`/`--help` after a command shows that command's help, before the command is checked.
 

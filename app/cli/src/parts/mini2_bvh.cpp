@@ -1,10 +1,12 @@
 // What rt knows of mini project 2: the acceleration structure a render asks for (render.accel,
-// --accel: none, cbr or bvh), built once over the scene's shapes before any ray, and the render
-// on a pool of threads handing out square tiles (render.threads, --threads; 0: every core).
+// --accel: none, cbr or bvh), built once over the scene's shapes before any ray, the render
+// on a pool of threads handing out square tiles (render.threads, --threads; 0: every core), and
+// `rt bench`, the timing table across stages and accelerations (mini2_bvh/Bench.cpp).
 #include <CLI/App.hpp>
 
 #include "bvh/Acceleration.h"
 #include "bvh/TilePool.h"
+#include "mini2_bvh/Bench.h"
 #include "cli/CommandLine.h"
 #include "cli/Registry.h"
 #include "common/NearestName.h"
@@ -24,6 +26,7 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
     const RenderResult r = renderImage(job.camera, job.tracer, job.sampler, job.image, options);
     return RenderOutcome{r.counts, r.interrupted, r.threads};
   };
+  registry.commands.push_back(addBenchCommand);
   registry.sceneOptions.push_back([](CLI::App& command, SettingOverrides& into) {
     addOptional(command, "--threads", into.threads,
                 "render threads, 0..1024; 0: one per core (default: the scene's render.threads)",

@@ -1,0 +1,193 @@
+// The tables of `rt bench` in Markdown, CSV and JSON.
+#include "BenchTable.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/Progress.h"
+#include "common/JsonText.h"
+
+namespace rt::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// A double in its shortest form that reads back to the same value (CSV).
+std::string shortest(double v) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
+}
+
+/// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string mebibytes(std::int64_t bytes) {
+  return fixed(static_cast<double>(bytes) / (1024.0 * 1024.0), 1) + " MiB";
+}
+
+/// A Markdown table: the header, the alignment line (text left, numbers right), the rows.
+class MarkdownTable {
+ public:
+  /// @param columns each column's title; numeric ones are right-aligned
+  MarkdownTable(std::vector<std::string> titles, std::vector<bool> numeric)
+      : titles_(std::move(titles)), numeric_(std::move(numeric)) {}
+  void add(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::string text() const {
+    std::string out = line(titles_) + "|";
+    for (const bool n : numeric_) out += n ? " ---: |" : " --- |";
+    out += "\n";
+    for (const auto& row : rows_) out += line(row);
+    return out;
+  }
+
+ private:
+  static std::string line(const std::vector<std::string>& cells) {
+    std::string out = "|";
+    for (const std::string& c : cells) out += " " + c + " |";
+    return out + "\n";
+  }
+  std::vector<std::string> titles_;
+  std::vector<bool> numeric_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+std::string rendersOf(int repeat) {
+  return repeat == 1
+             ? "one render per row"
+             : "the median of " + std::to_string(repeat) + " renders per row, rows taken in turn";
+}
+
+}  // namespace
+
+double BenchRow::raysPerSecond() const {
+  return seconds > 0 ? static_cast<double>(counts.total()) / seconds : 0;
+}
+
+double BenchRow::nodesPerRay() const {
+  const std::uint64_t rays = counts.total();
+  return rays > 0 ? static_cast<double>(counts.queries.nodesVisited) / static_cast<double>(rays)
+                  : 0;
+}
+
+double BenchTable::speedup(const BenchRow& row) const {
+  if (rows.empty() || row.seconds <= 0) return 0;
+  return &row == &rows.front() ? 1.0 : rows.front().seconds / row.seconds;
+}
+
+std::string formatBenchTable(const BenchTable& table, TableFormat format) {
+  switch (format) {
+    case TableFormat::Json: {
+      Json rows = Json::array();
+      for (const BenchRow& r : table.rows)
+        rows.push_back(Json{{"name", r.name},
+                            {"tracer", r.tracer},
+                            {"accel", r.accel},
+                            {"threads", r.threads},
+                            {"seconds", jsonNumber(r.seconds)},
+                            {"primary", r.counts.primary},
+                            {"secondary", r.counts.secondary},
+                            {"shadow", r.counts.shadow},
+                            {"raysPerSecond", jsonNumber(std::round(r.raysPerSecond()))},
+                            {"nodesPerRay", jsonNumber(r.nodesPerRay())},
+                            {"speedup", jsonNumber(table.speedup(r))},
+                            {"seedSeconds", r.seedSeconds ? jsonNumber(*r.seedSeconds) : Json()}});
+      return formatJson(Json{{"scene", table.scene},
+                             {"width", table.width},
+                             {"height", table.height},
+                             {"threads", table.threads},
+                             {"machine", table.machine},
+                             {"rows", rows}});
+    }
+    case TableFormat::Csv: {
+      std::string out = std::string(BENCH_CSV_HEADER) + "\n";
+      for (const BenchRow& r : table.rows)
+        out += csvField(r.name) + "," + csvField(r.tracer) + "," + csvField(r.accel) + "," +
+               std::to_string(r.threads) + "," + shortest(r.seconds) + "," +
+               std::to_string(r.counts.primary) + "," + std::to_string(r.counts.secondary) + "," +
+               std::to_string(r.counts.shadow) + "," + shortest(std::round(r.raysPerSecond())) +
+               "," + shortest(r.nodesPerRay()) + "," + shortest(table.speedup(r)) + "," +
+               (r.seedSeconds ? shortest(*r.seedSeconds) : std::string()) + "\n";
+      return out;
+    }
+    case TableFormat::Markdown:
+      break;
+  }
+  bool seed = false;
+  for (const BenchRow& r : table.rows) seed = seed || r.seedSeconds.has_value();
+  MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "seed", "primary", "secondary",
+                    "shadow", "rays/s", "nodes/ray", "speed-up"},
+                   {false, false, false, true, true, true, true, true, true, true, true, true});
+  for (const BenchRow& r : table.rows)
+    md.add({r.name, r.tracer, r.accel, std::to_string(r.threads), formatDuration(r.seconds),
+            r.seedSeconds ? formatDuration(*r.seedSeconds) : std::string(),
+            std::to_string(r.counts.primary), std::to_string(r.counts.secondary),
+            std::to_string(r.counts.shadow), fixed(r.raysPerSecond(), 0), fixed(r.nodesPerRay(), 2),
+            fixed(table.speedup(r), 2)});
+  return "rt bench " + table.scene + ": " + std::to_string(table.width) + "x" +
+         std::to_string(table.height) + ", " + std::to_string(table.threads) +
+         " threads for the multi-threaded rows, " + table.machine + "; " + rendersOf(table.repeat) +
+         (seed ? "; seed: the seed report's times for its galaxy at 1280x720" : "") + "\n\n" +
+         md.text();
+}
+
+std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
+  switch (format) {
+    case TableFormat::Json: {
+      Json rows = Json::array();
+      for (const ScalingRow& r : table.rows)
+        rows.push_back(Json{{"stars", r.stars},
+                            {"shapes", r.shapes},
+                            {"buildSeconds", jsonNumber(r.buildSeconds)},
+                            {"renderSeconds", jsonNumber(r.renderSeconds)},
+                            {"peakBytes", r.peakBytes},
+                            {"bytesPerStar", r.bytesPerStar}});
+      return formatJson(Json{{"scene", "galaxy"},
+                             {"width", table.width},
+                             {"height", table.height},
+                             {"scaling", rows}});
+    }
+    case TableFormat::Csv: {
+      std::string out = std::string(SCALING_CSV_HEADER) + "\n";
+      for (const ScalingRow& r : table.rows)
+        out += std::to_string(r.stars) + "," + std::to_string(r.shapes) + "," +
+               shortest(r.buildSeconds) + "," + shortest(r.renderSeconds) + "," +
+               std::to_string(r.peakBytes) + "," + std::to_string(r.bytesPerStar) + "\n";
+      return out;
+    }
+    case TableFormat::Markdown:
+      break;
+  }
+  MarkdownTable md({"stars", "shapes", "BVH build", "render", "peak memory", "bytes per star"},
+                   {true, true, true, true, true, true});
+  for (const ScalingRow& r : table.rows)
+    md.add({std::to_string(r.stars), std::to_string(r.shapes), formatDuration(r.buildSeconds),
+            formatDuration(r.renderSeconds), mebibytes(r.peakBytes),
+            std::to_string(r.bytesPerStar)});
+  return "rt bench --scaling: the galaxy without diffusion, " + std::to_string(table.width) + "x" +
+         std::to_string(table.height) + " (the middle of the seed's view), beams tracer, BVH, " +
+         std::to_string(table.threads) + " threads, " + table.machine + "; " +
+         rendersOf(table.repeat) +
+         "; each galaxy in a process of its own: BVH build in CPU time, render in wall time, "
+         "peak = its ru_maxrss, bytes per star = (peak - " +
+         mebibytes(table.baselineBytes) + " of an empty process) / stars\n\n" + md.text();
+}
+
+}  // namespace rt::cli

@@ -1,0 +1,76 @@
+#pragma once
+// Internal to mini2's part of rt: the tables `rt bench` prints, as data, and their three formats
+// (Markdown, CSV, JSON). docs/bench.json is read by the gallery generator with exactly the JSON
+// keys written here.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "camera/SampleContext.h"
+
+namespace rt::cli {
+
+enum class TableFormat { Markdown, Csv, Json };
+
+/// One render of the timing table: a row name, how it was rendered, and what it cost.
+struct BenchRow {
+  std::string name;    ///< "no acceleration, 1 thread", ..., or the tracer's stage
+  std::string tracer;  ///< a tracer's name (--tracer)
+  std::string accel;   ///< none, cbr or bvh
+  int threads = 1;     ///< threads that rendered (never more than the image's tiles)
+  double seconds = 0;  ///< wall time of the render: the median of the repeats
+  RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
+  std::optional<double> seedSeconds{};  ///< the seed report's time for this row, if it has one
+
+  double raysPerSecond() const;  ///< every ray (primary, secondary, shadow) per wall second
+  double nodesPerRay() const;    ///< BVH nodes visited per ray, of every kind
+};
+
+struct BenchTable {
+  std::string scene;  ///< SCENE as given
+  int width = 0, height = 0;
+  int threads = 1;      ///< the threads the multi-threaded rows asked for
+  std::string machine;  ///< "AMD EPYC 7B13, 2 CPUs"
+  int repeat = 1;       ///< renders per row; seconds are their medians
+  std::vector<BenchRow> rows{};
+
+  /// The first row's wall time over row's (1 for the first row itself; 0 for a row of no time).
+  double speedup(const BenchRow& row) const;
+};
+
+/// One galaxy of the star scaling, measured in a process of its own.
+struct ScalingRow {
+  long stars = 0;                 ///< the galaxy's stars parameter
+  std::uint64_t shapes = 0;       ///< every shape of the scene: stars, suns, core, box, frame, ...
+  double buildSeconds = 0;        ///< the BVH's build: CPU time (it runs on one thread)
+  double renderSeconds = 0;       ///< wall time of the render: the median of the repeats
+  std::int64_t peakBytes = 0;     ///< the process's peak resident size (ru_maxrss)
+  std::int64_t bytesPerStar = 0;  ///< (peakBytes - the empty process's) / stars, at least 0
+};
+
+struct ScalingTable {
+  int width = 0, height = 0;
+  int threads = 1;  ///< the threads the renders asked for
+  std::string machine;
+  int repeat = 1;
+  std::int64_t baselineBytes = 0;  ///< the peak resident size of a child that does nothing
+  std::vector<ScalingRow> rows{};
+};
+
+/// The table as text in format, ending with a newline. Markdown: a line that says what was
+/// measured, an empty line, then the table; CSV: a header line, then a line per row; JSON: the
+/// documented objects, written by formatJson.
+std::string formatBenchTable(const BenchTable& table, TableFormat format);
+std::string formatScalingTable(const ScalingTable& table, TableFormat format);
+
+/// The CSV header lines (the tests and the docs quote them).
+inline constexpr std::string_view BENCH_CSV_HEADER =
+    "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,speedup,"
+    "seedSeconds";
+inline constexpr std::string_view SCALING_CSV_HEADER =
+    "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar";
+
+}  // namespace rt::cli

@@ -1,0 +1,443 @@
+// Tests of `rt bench` (mini project 2's command): the rows, their order and their exact counts on
+// tiny images, the three formats, the star scaling (each galaxy in a process of its own), every
+// usage error before the first ray, and Ctrl-C. Timings are never asserted beyond > 0.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "InProcess.h"
+#include "RtProcess.h"
+#include "cli/Commands.h"
+#include "cli/Tracers.h"
+#include "glossy/Galaxy.h"
+
+namespace rt::cli {
+namespace {
+
+using nlohmann::json;
+
+using test::lines;
+using test::Outcome;
+using test::run;
+
+/// The rows' names in the documented order: the seed's four, then one per tracer of the build.
+std::vector<std::string> expectedNames() {
+  std::vector<std::string> names{"no acceleration", "threads", "threads + CBR",
+                                 "threads + CBR + BVH"};
+  for (const TracerKind& t : tracerKinds()) names.push_back(t.stage);
+  return names;
+}
+
+int cores() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+// ---------------------------------------------------------------------------------------------
+// The timing table
+
+TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
+  const Outcome r = run({"bench", "galaxy", "--width", "16", "--height", "9", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // TC01: the header: scene, size, the threads of the multi-threaded rows, the machine
+  EXPECT_EQ(j["scene"], "galaxy");
+  EXPECT_EQ(j["width"], 16);
+  EXPECT_EQ(j["height"], 9);
+  EXPECT_EQ(j["threads"], cores());
+  EXPECT_FALSE(j["machine"].get<std::string>().empty());
+  // TC02: the rows in the documented order, each with exactly the documented keys
+  const json& rows = j["rows"];
+  const std::vector<std::string> names = expectedNames();
+  ASSERT_EQ(rows.size(), names.size());
+  const std::vector<std::string> keys{"name",          "tracer",      "accel",     "threads",
+                                      "seconds",       "primary",     "secondary", "shadow",
+                                      "raysPerSecond", "nodesPerRay", "speedup",   "seedSeconds"};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<std::string> got;
+    for (const auto& [key, value] : rows[i].items()) got.push_back(key);
+    std::vector<std::string> sortedKeys = keys;
+    std::sort(got.begin(), got.end());
+    std::sort(sortedKeys.begin(), sortedKeys.end());
+    EXPECT_EQ(got, sortedKeys) << i;
+    EXPECT_EQ(rows[i]["name"], names[i]) << i;
+  }
+  // TC03: the seed's rows render with the galaxy's tracer, beams, and the seed's accelerations
+  const std::vector<std::string> accels{"none", "none", "cbr", "bvh"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(rows[i]["tracer"], "beams") << i;
+    EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
+  }
+  // TC04: then every tracer of the build, in the course's order, through the BVH
+  for (std::size_t i = 4; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["tracer"], tracerKinds()[i - 4].name) << i;
+    EXPECT_EQ(rows[i]["accel"], "bvh") << i;
+  }
+  // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles)
+  for (const json& row : rows) EXPECT_EQ(row["threads"], 1) << row["name"];
+  // TC06: one camera ray per pixel in every row
+  for (const json& row : rows) EXPECT_EQ(row["primary"], 144) << row["name"];
+  // TC07: the seed's rows trace the same rays: the images are the same bits, so are the counts
+  for (std::size_t i = 1; i < 4; ++i)
+    for (const char* kind : {"primary", "secondary", "shadow"})
+      EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
+  EXPECT_GT(rows[0]["secondary"].get<long>(), 0);
+  EXPECT_GT(rows[0]["shadow"].get<long>(), 0);
+  // TC08: the beams row through the BVH is the fourth row again
+  for (const char* kind : {"primary", "secondary", "shadow", "nodesPerRay"})
+    EXPECT_EQ(rows.back()[kind], rows[3][kind]) << kind;
+  // TC09: nodes per ray: none without a hierarchy, some through the BVH
+  EXPECT_EQ(rows[0]["nodesPerRay"], 0);
+  EXPECT_EQ(rows[1]["nodesPerRay"], 0);
+  for (std::size_t i = 3; i < rows.size(); ++i)
+    EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
+  // TC10: the seed's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s, 6 min
+  // 47 s), null after them
+  const std::vector<int> seed{4860, 1540, 837, 407};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(rows[i]["seedSeconds"], seed[i]) << i;
+  for (std::size_t i = 4; i < rows.size(); ++i) EXPECT_TRUE(rows[i]["seedSeconds"].is_null()) << i;
+  // TC11: the speed-up is over the first row: exactly 1 there; the times and rates positive
+  EXPECT_EQ(rows[0]["speedup"], 1);
+  for (const json& row : rows) {
+    EXPECT_GT(row["seconds"].get<double>(), 0) << row["name"];
+    EXPECT_GT(row["raysPerSecond"].get<double>(), 0) << row["name"];
+    EXPECT_GT(row["speedup"].get<double>(), 0) << row["name"];
+  }
+  // TC12: one progress line per row started, on stderr
+  const std::vector<std::string> err = lines(r.err);
+  ASSERT_EQ(err.size(), names.size()) << r.err;
+  EXPECT_EQ(err[0], "rt bench: row 1/" + std::to_string(names.size()) +
+                        ": no acceleration (tracer beams, accel none, 1 thread)");
+  for (std::size_t i = 0; i < err.size(); ++i)
+    EXPECT_TRUE(err[i].starts_with("rt bench: row " + std::to_string(i + 1) + "/" +
+                                   std::to_string(names.size()) + ": " + names[i] + " ("))
+        << err[i];
+}
+
+TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
+  // Without diffusion and 64 x 9 (two tiles of 32): cheap, and two threads can share it.
+  const Outcome r = run({"bench", "galaxy", "--param", "diffusion=off", "--width", "64", "--height",
+                         "9", "--threads", "2", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // TC01: --threads sets the multi-threaded rows' threads; the first row has one
+  EXPECT_EQ(j["threads"], 2);
+  const json& rows = j["rows"];
+  ASSERT_EQ(rows.size(), expectedNames().size());
+  EXPECT_EQ(rows[0]["threads"], 1);
+  for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i]["threads"], 2) << i;
+  // TC02: the same rays on one thread and on two
+  for (std::size_t i = 1; i < 4; ++i)
+    for (const char* kind : {"primary", "secondary", "shadow"})
+      EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
+  EXPECT_EQ(rows[0]["primary"], 64 * 9);
+}
+
+TEST(BenchTests, markdownHasACaptionAndTheSeedsTimes) {
+  const Outcome r =
+      run({"bench", "galaxy", "--param", "diffusion=off", "--width", "16", "--height", "9"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<std::string> out = lines(r.out);
+  ASSERT_EQ(out.size(), 4 + expectedNames().size()) << r.out;
+  // TC01: a caption naming the scene, the size and the seed's times, then an empty line
+  EXPECT_TRUE(out[0].starts_with("rt bench galaxy: 16x9, " + std::to_string(cores()) +
+                                 " threads for the multi-threaded rows, "))
+      << out[0];
+  EXPECT_TRUE(out[0].ends_with(
+      "; one render per row; seed: the seed report's times for its galaxy at 1280x720"))
+      << out[0];
+  EXPECT_EQ(out[1], "");
+  // TC02: the header and the alignment line, exactly
+  EXPECT_EQ(out[2],
+            "| row | tracer | accel | threads | wall | seed | primary | secondary | shadow | "
+            "rays/s | nodes/ray | speed-up |");
+  EXPECT_EQ(out[3],
+            "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+  // TC03: the seed's rows carry its times, written as the seed's report has them
+  const std::vector<std::string> seed{"1 h 21 min", "25 min 40 s", "13 min 57 s", "6 min 47 s"};
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_NE(out[4 + i].find(" s | " + seed[i] + " | 144 | "), std::string::npos) << out[4 + i];
+  EXPECT_TRUE(out[4].starts_with("| no acceleration | beams | none | 1 | ")) << out[4];
+  EXPECT_TRUE(out[4].ends_with(" | 0.00 | 1.00 |")) << out[4];
+  // TC04: an empty seed cell after them
+  EXPECT_NE(out[8].find(" s |  | 144 | "), std::string::npos) << out[8];
+}
+
+TEST(BenchTests, csvOfAnotherSceneHasNoSeedTimes) {
+  const Outcome r = run({"bench", "two-color", "--width", "16", "--height", "16", "--csv"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<std::string> out = lines(r.out);
+  ASSERT_EQ(out.size(), 1 + expectedNames().size()) << r.out;
+  // TC01: the header line, exactly
+  EXPECT_EQ(out[0],
+            "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,"
+            "speedup,seedSeconds");
+  // TC02: the first row: the scene's tracer (ambient), no acceleration, one thread, 256 camera
+  // rays and no others, no nodes, speed-up 1, and no seed time (the seed timed its galaxy only)
+  EXPECT_TRUE(out[1].starts_with("no acceleration,ambient,none,1,")) << out[1];
+  EXPECT_NE(out[1].find(",256,0,0,"), std::string::npos) << out[1];
+  EXPECT_TRUE(out[1].ends_with(",0,1,")) << out[1];
+  // TC03: every row has the twelve fields and an empty seed field
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    EXPECT_EQ(std::count(out[i].begin(), out[i].end(), ','), 11) << out[i];
+    EXPECT_TRUE(out[i].ends_with(",")) << out[i];
+  }
+}
+
+TEST(BenchTests, repeatTakesTheRowsInTurn) {
+  const Outcome r =
+      run({"bench", "two-color", "--width", "8", "--height", "8", "--repeat", "2", "--csv"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t n = expectedNames().size();
+  const std::vector<std::string> err = lines(r.err);
+  ASSERT_EQ(err.size(), 2 * n) << r.err;
+  // TC01: every row once, then every row again (round robin, not each row twice in a row)
+  for (std::size_t k = 0; k < 2 * n; ++k)
+    EXPECT_TRUE(err[k].starts_with("rt bench: row " + std::to_string(k % n + 1) + "/" +
+                                   std::to_string(n) + ", repeat " + std::to_string(k / n + 1) +
+                                   "/2: "))
+        << err[k];
+  // TC02: one table row per row, not per render
+  EXPECT_EQ(lines(r.out).size(), 1 + n);
+}
+
+TEST(BenchTests, outputFilesTakeTheirFormatsFromTheirEndings) {
+  const std::string dir = test::freshDirectory("benchOutput");
+  const std::string jsonFile = dir + "/bench.json", mdFile = dir + "/bench.md";
+  { std::ofstream(jsonFile) << "the previous table"; }
+  // -o before SCENE takes one file: the scene is still two-color
+  const Outcome r =
+      run({"bench", "-o", jsonFile, "two-color", "--width", "8", "--height", "8", "-o", mdFile});
+  ASSERT_EQ(r.code, 0) << r.err;
+  // TC01: nothing on stdout; each file in the format of its ending, from the same run
+  EXPECT_EQ(r.out, "");
+  const json j = json::parse(test::readFile(jsonFile));
+  EXPECT_EQ(j["scene"], "two-color");
+  EXPECT_EQ(j["rows"].size(), expectedNames().size());
+  const std::vector<std::string> table = lines(test::readFile(mdFile));
+  ASSERT_EQ(table.size(), 4 + expectedNames().size());
+  EXPECT_TRUE(table[0].starts_with("rt bench two-color: 8x8, ")) << table[0];
+  // TC02: stderr names both files
+  EXPECT_TRUE(r.err.ends_with("rt bench: wrote " + jsonFile + "\nrt bench: wrote " + mdFile + "\n"))
+      << r.err;
+  // TC03: no temporary file left beside them
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The star scaling
+
+TEST(BenchTests, scalingMeasuresEachGalaxyInItsOwnProcess) {
+  const Outcome r = run(
+      {"bench", "--scaling", "--stars", "1000,2000", "--width", "20", "--height", "20", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // TC01: the documented header
+  EXPECT_EQ(j["scene"], "galaxy");
+  EXPECT_EQ(j["width"], 20);
+  EXPECT_EQ(j["height"], 20);
+  const json& rows = j["scaling"];
+  ASSERT_EQ(rows.size(), 2u);
+  // TC02: the star counts asked for, and every shape of those galaxies: 21 arms of 48 and of 95
+  // positions (stars / 21, rounded), 1008 and 1995, less the suns' empty ones (12 and 33: a
+  // tenth of the three sun arms'), plus 69 fixed shapes: the floor, the faces of the pedestal's
+  // two boxes and of the glass box (18), the frame's 8 bars of 6 faces (48), the core, its halo
+  const long stars[] = {1000, 2000};
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(rows[i]["stars"], stars[i]);
+    EXPECT_EQ(rows[i]["shapes"],
+              galaxy(GalaxyParams{.stars = stars[i], .diffusion = false}).scene.geometries.size());
+    // TC03: a peak of the child's own, and times
+    EXPECT_GT(rows[i]["peakBytes"].get<long>(), 0);
+    EXPECT_GE(rows[i]["bytesPerStar"].get<long>(), 0);
+    EXPECT_GE(rows[i]["buildSeconds"].get<double>(), 0);
+    EXPECT_GT(rows[i]["renderSeconds"].get<double>(), 0);
+  }
+  EXPECT_EQ(rows[0]["shapes"], 1065);
+  EXPECT_EQ(rows[1]["shapes"], 2031);
+  // TC04: one progress line per galaxy
+  EXPECT_EQ(lines(r.err),
+            (std::vector<std::string>{
+                "rt bench: galaxy 1/2: 1000 stars, 20x20, " + std::to_string(cores()) +
+                    (cores() == 1 ? " thread" : " threads"),
+                "rt bench: galaxy 2/2: 2000 stars, 20x20, " + std::to_string(cores()) +
+                    (cores() == 1 ? " thread" : " threads")}));
+}
+
+TEST(BenchTests, scalingCsvAndMarkdown) {
+  // TC01: the CSV header line, exactly, and a line per galaxy
+  Outcome r = run({"bench", "--scaling", "--stars", "100", "--width", "8", "--csv"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> out = lines(r.out);
+  ASSERT_EQ(out.size(), 2u) << r.out;
+  EXPECT_EQ(out[0], "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar");
+  EXPECT_TRUE(out[1].starts_with("100,")) << out[1];
+  // TC02: Markdown: a caption, the header exactly, a line per galaxy
+  r = run({"bench", "--scaling", "--stars", "100", "--height", "8"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  out = lines(r.out);
+  ASSERT_EQ(out.size(), 5u) << r.out;
+  EXPECT_TRUE(out[0].starts_with("rt bench --scaling: the galaxy without diffusion, 8x8 "))
+      << out[0];
+  EXPECT_EQ(out[2], "| stars | shapes | BVH build | render | peak memory | bytes per star |");
+  EXPECT_EQ(out[3], "| ---: | ---: | ---: | ---: | ---: | ---: |");
+  EXPECT_TRUE(out[4].starts_with("| 100 | ")) << out[4];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Usage errors, all before the first ray
+
+TEST(BenchTests, badUsageExitsWithTwoBeforeAnyRay) {
+  struct Case {
+    const char* partition;
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::string directory = test::freshDirectory("benchOutputIsADirectory");
+  const std::vector<Case> cases = {
+      // TC01: no renders at all
+      {"TC01",
+       {"bench", "--repeat", "0"},
+       "rt: --repeat: expected an integer from 1 to 1000, got '0'\n"},
+      // TC02: a galaxy without stars
+      {"TC02",
+       {"bench", "--scaling", "--stars", "1000,0"},
+       "rt: --stars: expected an integer from 1 to 10000000, got '0'\n"},
+      // TC03: a star list with an empty item
+      {"TC03",
+       {"bench", "--scaling", "--stars", "1000,"},
+       "rt: --stars: expected an integer from 1 to 10000000, got ''\n"},
+      // TC04: a file ending that names no format
+      {"TC04",
+       {"bench", "-o", "x.txt"},
+       "rt: -o: the table's format follows the name's ending, which must be .md (Markdown), .csv "
+       "or .json; got 'x.txt'\n"},
+      // TC05: a format flag and another ending
+      {"TC05",
+       {"bench", "--json", "-o", "x.csv"},
+       "rt: -o: --json writes JSON, so the name must end in .json; got 'x.csv'\n"},
+      // TC06: two formats
+      {"TC06",
+       {"bench", "--csv", "--json"},
+       "rt: --csv and --json: give one of them (Markdown without either)\n"},
+      // TC07: -o naming a directory
+      {"TC07",
+       {"bench", "-o", directory},
+       "rt: -o: cannot write '" + directory + "': it is a directory\n"},
+      // TC08: an unknown scene
+      {"TC08",
+       {"bench", "galaxi"},
+       "rt: unknown scene 'galaxi'; did you mean 'galaxy'? (rt list shows the built-in scenes; a "
+       "scene file ends in .json)\n"},
+      // TC09: the rows choose the acceleration
+      {"TC09",
+       {"bench", "--accel", "bvh"},
+       "rt: unknown option '--accel' for rt bench (see rt bench --help)\n"},
+      // TC10: --full and a size
+      {"TC10",
+       {"bench", "--full", "--width", "64"},
+       "rt: --full: the scene's own resolution; give either --full or --width/--height\n"},
+      // TC11: --stars without --scaling
+      {"TC11",
+       {"bench", "--stars", "1000"},
+       "rt: --stars: only with --scaling (the galaxy's star counts)\n"},
+      // TC12: the scaling of another scene
+      {"TC12",
+       {"bench", "two-color", "--scaling"},
+       "rt: --scaling: renders the built-in galaxy only, got 'two-color'\n"},
+      // TC13: the scaling with an option that would change its render
+      {"TC13",
+       {"bench", "--scaling", "--tracer", "phong"},
+       "rt: --tracer: not with --scaling (it renders the galaxy of --stars stars without "
+       "diffusion, beams tracer, BVH)\n"},
+      // TC14: a bad parameter of the galaxy
+      {"TC14",
+       {"bench", "--param", "stars=-1"},
+       "rt: --param stars: expected an integer from 0 to 10000000, got '-1'\n"},
+      // TC15: too many threads
+      {"TC15",
+       {"bench", "--threads", "1025"},
+       "rt: --threads: expected an integer from 0 to 1024, got '1025'\n"},
+      // TC21: one beyond the most repeats
+      {"TC21",
+       {"bench", "--repeat", "1001"},
+       "rt: --repeat: expected an integer from 1 to 1000, got '1001'\n"},
+      // TC22: one beyond the most stars
+      {"TC22",
+       {"bench", "--scaling", "--stars", "10000001"},
+       "rt: --stars: expected an integer from 1 to 10000000, got '10000001'\n"},
+  };
+  for (const Case& c : cases) {
+    const Outcome r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.partition;
+    EXPECT_EQ(r.err, c.message) << c.partition;
+    EXPECT_EQ(r.out, "") << c.partition;
+  }
+}
+
+TEST(BenchTests, helpShowsTheSceneAsOptional) {
+  const Outcome r = run({"bench", "--help"});
+  EXPECT_EQ(r.code, 0);
+  // TC01: SCENE may be left out (the galaxy); the options are listed
+  EXPECT_TRUE(r.out.starts_with("Usage: rt bench [SCENE] [OPTIONS]\n")) << r.out;
+  for (const char* text : {"--full", "--repeat N", "--csv", "--json", "--scaling", "--stars LIST",
+                           "--threads N", "-o, --output", "130"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+  EXPECT_EQ(r.out.find("--accel"), std::string::npos);
+  // TC02: rt --help lists the command
+  EXPECT_NE(run({"--help"}).out.find("\n  bench "), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ctrl-C
+
+TEST(BenchTests, stopBeforeTheFirstRowWritesNothing) {
+  const std::string dir = test::freshDirectory("benchStopped");
+  const std::string out = dir + "/bench.csv";
+  { std::ofstream(out) << "the previous table"; }
+  const std::atomic<bool> stop{true};
+  // TC01: the table: exit 130 before the first row, the files untouched
+  Outcome r = run({"bench", "two-color", "--width", "8", "-o", out, "-o", dir + "/b.md"}, &stop);
+  EXPECT_EQ(r.code, 130);
+  EXPECT_EQ(r.err, "rt: interrupted at row 1 of " + std::to_string(expectedNames().size()) +
+                       "; nothing written to " + out + ", " + dir + "/b.md\n");
+  EXPECT_EQ(test::readFile(out), "the previous table");
+  // TC02: the scaling: its first child is stopped
+  r = run({"bench", "--scaling", "--stars", "100", "--width", "8"}, &stop);
+  EXPECT_EQ(r.code, 130);
+  EXPECT_EQ(r.err, "rt: interrupted at the start; nothing written\n");
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(BenchProcessTests, ctrlCStopsTheBenchWithinARow) {
+  // TC01: the seed's size, whose first row takes minutes: SIGINT once it has started
+  test::RtChild child({"bench", "--full", "--csv"});
+  ASSERT_TRUE(child.waitForLine("rt bench: row 1/")) << child.err();
+  child.signal(SIGINT);
+  EXPECT_EQ(child.wait(), 130) << child.err();
+  EXPECT_TRUE(child.err().ends_with("rt: interrupted at row 1 of " +
+                                    std::to_string(expectedNames().size()) + "; nothing written\n"))
+      << child.err();
+}
+
+TEST(BenchProcessTests, ctrlCStopsTheScalingsChildProcess) {
+  // TC01: SIGINT to rt alone (not to its process group): rt stops its measuring child itself
+  test::RtChild scaling({"bench", "--scaling", "--stars", "1000000", "--width", "2000"});
+  ASSERT_TRUE(scaling.waitForLine("rt bench: galaxy 1/1")) << scaling.err();
+  scaling.signal(SIGINT);
+  EXPECT_EQ(scaling.wait(), 130) << scaling.err();
+  EXPECT_TRUE(scaling.err().ends_with(
+      "rt: interrupted at galaxy 1 of 1 (1000000 stars); nothing written\n"))
+      << scaling.err();
+}
+
+}  // namespace
+}  // namespace rt::cli
