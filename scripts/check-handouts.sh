@@ -7,8 +7,7 @@
 # First the reference: the checkout's tracked files, configured and built, run the tests of every
 # stage up to the last one checked; each label must select tests and pass. Then, for each stage
 # folder (stage01_primitives ... mini2_bvh) that has solution regions, in course order, or only
-# the ones named (folder or label); a stage without regions (mini2_bvh today) is skipped and said
-# so:
+# the ones named (folder or label); a stage without regions is skipped and said so:
 #   1. scripts/make-handout writes its student repository;
 #   2. it configures, and the test targets of its stages (<label>_tests) build;
 #   3. the stage's own tests fail, at least one of them with "not implemented" in its output;
