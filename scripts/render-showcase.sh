@@ -5,10 +5,11 @@
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
 # (scripts/deps.sh), configures the release preset, builds the `rt` program and renders. Without
-# SCENE it renders the showcase scene, galaxy (1280 x 720, diffused glass), at its full
-# resolution (or the first scene `rt list` prints when that one does not exist: a course cut). SCENE is a built-in name or a .json file;
-# the options go to `rt render` (for example --width 400 --height 300). Set RT_BUILD_DIR to
-# build somewhere other than build/release.
+# SCENE it renders the showcase scene, the galaxy in a glass box (1280 x 720, diffused glass), at
+# its full resolution on every core (or the first scene `rt list` prints when there is no galaxy:
+# a course cut before mini1_glossy). SCENE is a built-in name or a .json file; the options go to
+# `rt render` (for example --width 640 --height 360, --threads 1, --accel none). Set
+# RT_BUILD_DIR to build somewhere other than build/release.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
