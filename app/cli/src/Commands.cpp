@@ -236,14 +236,10 @@ void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, b
   if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
       !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
     return;
-  // The tracers after the ambient one are the later stages', which show the lights (those
-  // before it are the debugging views).
+  // The later stages' tracers, which show the lights (not the debugging views).
   std::string others;
-  bool after = false;
-  for (const TracerKind& t : tracerKinds()) {
-    if (after) others += (others.empty() ? "" : ", ") + t.name;
-    after = after || t.name == "ambient";
-  }
+  for (const TracerKind& t : tracerKinds())
+    if (t.name != "ambient" && !t.debugView) others += (others.empty() ? "" : ", ") + t.name;
   io.err << "rt: warning: the ambient tracer ("
          << (arguments.tracer ? "--tracer ambient" : "the scene's render.tracer")
          << ") shows the ambient light wherever a ray hits a shape, and this scene's ambient "

@@ -32,11 +32,12 @@ RenderOutcome renderRows(const RenderJob& job) {
 
 /// The tracer T over the document's scene.
 template <typename T>
-TracerKind tracerKind(std::string name, std::string description) {
+TracerKind tracerKind(std::string name, std::string description, bool debugView) {
   return {std::move(name), "stage04_camera", std::move(description),
           [](const SceneDocument& doc, const Intersectable* accelerator) {
             return std::unique_ptr<RayTracer>(std::make_unique<T>(*doc.scene, accelerator));
-          }};
+          },
+          debugView};
 }
 
 /// A scene of this stage as a document, in this build's scene model (from stage 5 on, a
@@ -64,13 +65,13 @@ void registerCli_stage04_camera(CliRegistry& registry) {
   // The debugging views first, in the order of the stages they show (1, 2, 3): the last tracer
   // of the list is the default of a scene file without render.tracer, the highest stage's.
   registry.tracers.push_back(
-      tracerKind<RaysTracer>("rays", "debug view: the ray's direction d as (d*0.5+0.5)*255"));
+      tracerKind<RaysTracer>("rays", "debug view: the ray's direction d as (d*0.5+0.5)*255", true));
   registry.tracers.push_back(tracerKind<NormalsTracer>(
-      "normals", "debug view: the nearest hit's normal n as (n*0.5+0.5)*255"));
+      "normals", "debug view: the nearest hit's normal n as (n*0.5+0.5)*255", true));
   registry.tracers.push_back(tracerKind<HitsTracer>(
-      "hits", "debug view: hits along the ray: 1 blue, 2 green, 3 yellow, 4+ red"));
+      "hits", "debug view: hits along the ray: 1 blue, 2 green, 3 yellow, 4+ red", true));
   registry.tracers.push_back(
-      tracerKind<AmbientTracer>("ambient", "the ambient light wherever a ray hits a shape"));
+      tracerKind<AmbientTracer>("ambient", "the ambient light wherever a ray hits a shape", false));
   registry.scenes.push_back(builtinScene(
       "two-color", "the course's base render test: four flat pink shapes on green, ambient only",
       "ambient", twoColorScene));
