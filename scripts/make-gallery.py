@@ -7,7 +7,7 @@ The page shows, from what the repository holds (nothing is rendered here):
   - the stage map: every stage folder (stageNN_*, miniN_*) in course order, with the first
     paragraph of its README and the images of docs/images/ its README links;
   - the galaxy with and without diffused glass (docs/images/galaxy.png and
-    docs/images/galaxy-no-diffusion.png);
+    docs/images/galaxy-clear.png);
   - every other image of docs/images/ (a scene's reference image is `rt render NAME
     --width 500`, see scripts/render-docs-images.sh);
   - the timing across stages: a bar chart (inline SVG) and a table from the JSON that
@@ -41,9 +41,11 @@ from pathlib import Path
 PROGRAM = "make-gallery"
 STYLESHEET = Path(__file__).resolve().parent.parent / "docs" / "gallery.css"
 STAGE_FOLDER = re.compile(r"^(stage|mini)(\d+)_[A-Za-z0-9_]+$")
-IMAGE_LINK = re.compile(r"docs/images/([A-Za-z0-9_.-]+\.png)")
+# A link or an <img> of a stage README (one folder down); a path in running text or in a command
+# (`rt compare NAME.png docs/images/NAME.png`) is not an image of the page.
+IMAGE_LINK = re.compile(r"(?:\]\(|src=\")\.\./docs/images/([A-Za-z0-9_.-]+\.png)")
 GALAXY = [("galaxy.png", "with diffused glass", "the seed's final image"),
-          ("galaxy-no-diffusion.png", "without diffused glass", "one ray per refraction")]
+          ("galaxy-clear.png", "without diffused glass", "one ray per refraction")]
 THUMBNAIL = 240  # the width of an image on the page, in CSS pixels
 
 # The chart's layout, in SVG user units (pixels).

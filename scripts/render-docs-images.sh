@@ -5,7 +5,8 @@
 #
 # 1. The course's stages: docs/images/NAME.png is `rt render NAME --width 500`, for every built-in
 #    scene of stages 4 to 7 (the scenes of `rt list` that the ambient, phong, shadow or whitted
-#    tracer renders). The READMEs show them, and a student checks a render against them exactly:
+#    tracer renders, or one of stage 4's debugging views: rays, normals, hits; the `shapes` scene
+#    is stage 2's image). The READMEs show them, and a student checks a render against them exactly:
 #
 #      rt render NAME --width 500 -o mine.png && rt compare mine.png docs/images/NAME.png
 #
@@ -56,12 +57,14 @@ render() {
 }
 
 # 1. The course's scenes: those whose tracer (as their export records it) is one of stages 4-7.
+# (The debugging views are stage 4's.)
 # A scene's line of rt list starts with its name; an indented line lists its parameters.
 scenes="$("$rt" list | awk '/^[^ ]/ { print $1 }')"
+course_tracer='"tracer": "(rays|normals|hits|ambient|phong|shadow|whitted)"'
 names=()
 while read -r name; do
   scene="$("$rt" export "$name")"
-  [[ "$scene" =~ \"tracer\":\ \"(ambient|phong|shadow|whitted)\" ]] && names+=("$name")
+  [[ "$scene" =~ $course_tracer ]] && names+=("$name")
 done <<<"$scenes"
 ((${#names[@]})) || rt_die "rt list shows no scene of the course's stages"
 

@@ -44,9 +44,9 @@ using test::run;
 // The built-in scenes
 
 TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
-  // TC01: the scene count is stage 4's one scene plus every entry of the stages' tables
+  // TC01: the scene count is stage 4's two scenes plus every entry of the stages' tables
   // (and mini project 1's galaxy and demonstration scenes)
-  const std::size_t expected = 1 + lightingScenes().size() + shadowScenes().size() +
+  const std::size_t expected = 2 + lightingScenes().size() + shadowScenes().size() +
                                reflectionScenes().size() + 1 + demoScenes().size();
   EXPECT_EQ(builtinScenes().size(), expected);
   // TC02: every table entry is there under its own name, with its stage's tracer
@@ -62,9 +62,13 @@ TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   expectEntries(lightingScenes(), "phong");
   expectEntries(shadowScenes(), "shadow");
   expectEntries(reflectionScenes(), "whitted");
-  // TC03: stage 4's scene is rendered by the ambient tracer
+  // TC03: stage 4's scenes: the course's is rendered by the ambient tracer, the shapes by the
+  // normals
   ASSERT_NE(findBuiltinScene("two-color"), nullptr);
   EXPECT_EQ(makeBuiltinScene(*findBuiltinScene("two-color"), {}).render.tracer, "ambient");
+  ASSERT_NE(findBuiltinScene("shapes"), nullptr);
+  EXPECT_EQ(findBuiltinScene("shapes")->tracer, "normals");
+  EXPECT_EQ(makeBuiltinScene(*findBuiltinScene("shapes"), {}).render.tracer, "normals");
   // TC04: names are unique, non-empty, without spaces; every description is non-empty
   std::set<std::string> names;
   for (const BuiltinScene& s : builtinScenes()) {
@@ -241,8 +245,8 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       // TC06: an unknown tracer
       {"TC06",
        {"render", "two-color", "--tracer", "phog"},
-       "rt: --tracer: unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong shadow "
-       "whitted beams)\n"},
+       "rt: --tracer: unknown tracer 'phog'; did you mean 'phong'? (known: rays normals hits "
+       "ambient phong shadow whitted beams)\n"},
       // TC07: an output that is not a PNG
       {"TC07",
        {"render", "two-color", "-o", "x.jpg"},

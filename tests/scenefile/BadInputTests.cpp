@@ -303,9 +303,8 @@ const BadInput BAD_INPUTS[] = {
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
      "  \"render\": {\"tracer\": \"witted\"}\n"
      "}\n",
-     "bad.json:4:24: render.tracer: expected a tracer (ambient, phong, shadow, whitted, beams), "
-     "got "
-     "\"witted\"; did you mean 'whitted'?"},
+     "bad.json:4:24: render.tracer: expected a tracer (rays, normals, hits, ambient, phong, "
+     "shadow, whitted, beams), got \"witted\"; did you mean 'whitted'?"},
     // EP32: resolution beyond 2^15 per side
     {"AbsurdResolution",
      "{\n"

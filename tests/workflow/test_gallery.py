@@ -110,7 +110,8 @@ class GalleryTest(unittest.TestCase):
         (root / "stage02_beta" / "README.md").write_text(
             "# Stage 2 — beta\n\n| a table | first |\n|---|---|\n\nBeta's paragraph.\n\n"
             "![beta](../docs/images/beta.png) ![again](../docs/images/beta.png)\n"
-            "[absent](../docs/images/absent.png)\n", encoding="utf-8")
+            "[absent](../docs/images/absent.png)\n"
+            "Compare: `rt compare NAME.png docs/images/NAME.png`.\n", encoding="utf-8")
         images = root / "docs" / "images"
         images.mkdir(parents=True)
         (images / "beta.png").write_bytes(png(4, 2))
@@ -133,7 +134,7 @@ class GalleryTest(unittest.TestCase):
                          "make-gallery: missing: docs/images/absent.png (linked by "
                          "stage02_beta/README.md)\n"
                          "make-gallery: missing: mini1_gamma/README.md\n"
-                         "make-gallery: missing: docs/images/galaxy-no-diffusion.png (the galaxy "
+                         "make-gallery: missing: docs/images/galaxy-clear.png (the galaxy "
                          "without diffused glass)\n")
 
     def test_stage_map(self) -> None:

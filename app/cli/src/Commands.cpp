@@ -236,9 +236,10 @@ void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, b
   if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
       !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
     return;
+  // The later stages' tracers, which show the lights (not the debugging views).
   std::string others;
   for (const TracerKind& t : tracerKinds())
-    if (t.name != "ambient") others += (others.empty() ? "" : ", ") + t.name;
+    if (t.name != "ambient" && !t.debugView) others += (others.empty() ? "" : ", ") + t.name;
   io.err << "rt: warning: the ambient tracer ("
          << (arguments.tracer ? "--tracer ambient" : "the scene's render.tracer")
          << ") shows the ambient light wherever a ray hits a shape, and this scene's ambient "

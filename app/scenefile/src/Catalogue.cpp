@@ -103,11 +103,13 @@ constexpr CatalogueKey KEYS[] = {
     {"render", "threads", M2, D, "0"},
 };
 
-constexpr CatalogueTracer TRACERS[] = {{"ambient", "stage04_camera"},
-                                       {"phong", "stage05_lighting"},
-                                       {"shadow", "stage06_shadows"},
-                                       {"whitted", "stage07_reflections"},
-                                       {"beams", "mini1_glossy"}};
+// The debugging views of stage 4 first (they show stages 1, 2 and 3), so the last tracer of a
+// build is always its highest stage's.
+constexpr CatalogueTracer TRACERS[] = {
+    {"rays", "stage04_camera"},         {"normals", "stage04_camera"},
+    {"hits", "stage04_camera"},         {"ambient", "stage04_camera"},
+    {"phong", "stage05_lighting"},      {"shadow", "stage06_shadows"},
+    {"whitted", "stage07_reflections"}, {"beams", "mini1_glossy"}};
 
 }  // namespace
 

@@ -39,6 +39,9 @@ struct TracerKind {
   std::function<std::unique_ptr<RayTracer>(const SceneDocument& doc,
                                            const Intersectable* accelerator)>
       make;
+  /// A debugging view (stage 4's rays, normals, hits): it shows what a stage computes, not the
+  /// scene's light, so rt bench leaves it out of its table of the stages' tracers.
+  bool debugView = false;
 };
 
 /// A parameter of a built-in scene (`rt render galaxy --param arms=12`).

@@ -11,15 +11,15 @@
 
 namespace rt::cli {
 
-/// The tracers of this build, in the course's order (ambient, phong, shadow, whitted, beams in
-/// the full course).
+/// The tracers of this build, in the course's order (rays, normals, hits, ambient, phong, shadow,
+/// whitted, beams in the full course: stage 4's debugging views first).
 std::span<const TracerKind> tracerKinds();
 
 /// The tracer called name; the build's default (its highest stage's) for an empty name; or
 /// nullptr.
 const TracerKind* tracerNamed(std::string_view name);
 
-/// "unknown tracer 'phog'; did you mean 'phong'? (known: ambient phong ...)", or for a tracer of
+/// "unknown tracer 'phog'; did you mean 'phong'? (known: rays normals ...)", or for a tracer of
 /// a stage the build does not have, "the tracer 'whitted' needs stage07_reflections, which this
 /// build does not include".
 std::string unknownTracerMessage(std::string_view name);

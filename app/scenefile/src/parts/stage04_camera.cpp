@@ -358,7 +358,7 @@ void registerFormat_stage04_camera(SceneFormat& format) {
   attachCamera(format);
   attachGeometries(format);
   attachRender(format);
-  format.addTracer("ambient");
+  for (const char* tracer : {"rays", "normals", "hits", "ambient"}) format.addTracer(tracer);
   format.liftScene = [](const Scene& scene) { return std::make_shared<Scene>(scene); };
   format.writeDocument.push_back(writeDocument);
 }

@@ -193,7 +193,8 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   checkImageFits(doc.camera.nX, doc.camera.nY);
   const int threads = threadsOf(args);
 
-  // The rows: the seed's four with the scene's tracer, then every stage's tracer through the BVH.
+  // The rows: the seed's four with the scene's tracer, then every stage's tracer through the BVH
+  // (stage 4's debugging views left out: they do not render the scene's light).
   // The seed's times belong to its galaxy only.
   const bool seedScene = args.scene.argument == "galaxy";
   const TracerKind& sceneTracer = findTracer(doc.render.tracer);
@@ -207,9 +208,10 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
                   .seedSeconds = seedScene ? std::optional(s.seedSeconds) : std::nullopt},
          &sceneTracer});
   for (const TracerKind& kind : tracerKinds())
-    plan.push_back(
-        {BenchRow{.name = kind.stage, .tracer = kind.name, .accel = "bvh", .threads = threads},
-         &kind});
+    if (!kind.debugView)
+      plan.push_back(
+          {BenchRow{.name = kind.stage, .tracer = kind.name, .accel = "bvh", .threads = threads},
+           &kind});
 
   // Every structure before the first ray: one acceleration of each kind used, the tracers, the
   // sampler, the camera and its image (which every row renders into).
