@@ -6,7 +6,8 @@
 # 1. The course's stages: docs/images/NAME.png is `rt render NAME --width 500`, for every built-in
 #    scene of stages 4 to 7 (the scenes of `rt list` that the ambient, phong, shadow or whitted
 #    tracer renders, or one of stage 4's debugging views: rays, normals, hits; the `shapes` scene
-#    is stage 2's image). The READMEs show them, and a student checks a render against them exactly:
+#    is stage 2's image). The READMEs show them, and a student checks a render against them
+#    exactly:
 #
 #      rt render NAME --width 500 -o mine.png && rt compare mine.png docs/images/NAME.png
 #
