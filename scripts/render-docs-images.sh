@@ -104,4 +104,5 @@ linked="$(git ls-files --cached --others --exclude-standard -- '*README.md' 2>/d
           find . -name README.md -not -path './build*')"
 while read -r image; do
   [[ -z "$image" || -f "$image" ]] || echo "missing: $image (a README links it)"
-done < <(xargs grep -ohE 'docs/images/[A-Za-z0-9_.-]+\.png' <<<"$linked" | sort -u)
+done < <(xargs grep -ohE '(\]\(|src=")(\.\./)?docs/images/[A-Za-z0-9_.-]+\.png' <<<"$linked" |
+           sed -E 's#^.*(docs/images/)#\1#' | sort -u)

@@ -9,7 +9,6 @@
 #include <type_traits>
 #include <variant>
 
-#include "CourseMaterial.h"
 #include "geometries/Cylinder.h"
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
@@ -253,8 +252,8 @@ LitScene darkRoom(const char* name) {
 
 /// A grey checkerboard floor of nx x nz diffuse tiles of side 1 from corner (x0, z0).
 void addFloorBoard(LitScene& s, double x0, double z0, int nx, int nz) {
-  const std::uint32_t light = s.addAppearance(Color(20, 20, 20), material(0.6, 0.1, 20));
-  const std::uint32_t dark = s.addAppearance(Color(5, 5, 8), material(0.15, 0.1, 20));
+  const std::uint32_t light = s.addAppearance(Color(20, 20, 20), Material::course(0.6, 0.1, 20));
+  const std::uint32_t dark = s.addAppearance(Color(5, 5, 8), Material::course(0.15, 0.1, 20));
   addCheckerboard(s, x0, z0, 1, nx, nz, light, dark);
 }
 
@@ -287,7 +286,7 @@ SceneSetup<LitScene> glossySpheres() {
   }
   const std::array<double, 4> radii{0, 0.03, 0.08, 0.2};
   for (std::size_t i = 0; i < radii.size(); ++i) {
-    Material m = material(0.1, 0.6, 100, 0, 0.8);
+    Material m = Material::course(0.1, 0.6, 100, 0, 0.8);
     m.reflectedBeam = {1, radii[i], 8};
     s.add(Sphere(Point(-3.3 + 2.2 * static_cast<double>(i), 1, 0), 1), Color(8, 8, 10), m);
   }
@@ -297,7 +296,7 @@ SceneSetup<LitScene> glossySpheres() {
 
 SceneSetup<LitScene> frostedGlass() {
   LitScene s = darkRoom("frosted glass");
-  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(15, 15, 15), material(0.6, 0.1, 20));
+  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(15, 15, 15), Material::course(0.6, 0.1, 20));
   // The pattern: a wall of small coloured tiles at z = -3.
   const std::array<Color, 4> tiles{Color(230, 70, 50), Color(240, 240, 235), Color(40, 110, 220),
                                    Color(20, 20, 25)};
@@ -307,24 +306,24 @@ SceneSetup<LitScene> frostedGlass() {
       const double x = -6 + i * t, y = j * t;
       s.add(Polygon{Point(x, y, -3), Point(x + t, y, -3), Point(x + t, y + t, -3),
                     Point(x, y + t, -3)},
-            tiles[static_cast<std::size_t>((i + 2 * j) % 4)], material(0.3, 0, 0));
+            tiles[static_cast<std::size_t>((i + 2 * j) % 4)], Material::course(0.3, 0, 0));
     }
   }
   // A sphere behind each pane, close to it: blurred less than the wall further back.
-  const Material ball = material(0.5, 0.5, 60);
+  const Material ball = Material::course(0.5, 0.5, 60);
   for (const double x : {-2.4, 0.0, 2.4})
     s.add(Sphere(Point(x + 0.45, 0.45, -1), 0.45), Color(200, 140, 20), ball);
   // The panes at z = 0: clear, then frosted with a radius of 0.05 and 0.15 at distance 1, each
   // in a thin frame just in front of it.
   const std::array<double, 3> radii{0, 0.05, 0.15};
-  const std::uint32_t frame = s.addAppearance(Color(35, 35, 40), material(0.3, 0.5, 40));
+  const std::uint32_t frame = s.addAppearance(Color(35, 35, 40), Material::course(0.3, 0.5, 40));
   const auto bar = [&](double x0, double y0, double x1, double y1) {
     s.add(
         Polygon{Point(x0, y0, 0.01), Point(x1, y0, 0.01), Point(x1, y1, 0.01), Point(x0, y1, 0.01)},
         frame);
   };
   for (std::size_t i = 0; i < radii.size(); ++i) {
-    Material glass = material(0.05, 0.4, 60, 0.85, 0.05);
+    Material glass = Material::course(0.05, 0.4, 60, 0.85, 0.05);
     glass.refractedBeam = {1, radii[i], 8};
     const double x = -2.4 + 2.4 * static_cast<double>(i), w = 0.06;
     s.add(Polygon{Point(x - 1, 0.15, 0), Point(x + 1, 0.15, 0), Point(x + 1, 2.75, 0),
@@ -341,8 +340,8 @@ SceneSetup<LitScene> frostedGlass() {
 
 SceneSetup<LitScene> softShadows() {
   LitScene s = darkRoom("soft shadows");
-  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(20, 20, 20), material(0.8, 0.05, 10));
-  const Material paint = material(0.6, 0.4, 60);
+  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(20, 20, 20), Material::course(0.8, 0.05, 10));
+  const Material paint = Material::course(0.6, 0.4, 60);
   s.add(Sphere(Point(-2.3, 0.8, 0.2), 0.8), Color(40, 10, 5), paint);  // resting on the floor
   s.add(Sphere(Point(0.2, 2.1, -0.2), 0.6), Color(5, 25, 45), paint);  // floating
   s.add(Cylinder(0.22, Ray(Point(1.9, 0, -1.2), Vector(0, 1, 0)), 3.2), Color(10, 30, 10),
@@ -378,7 +377,7 @@ SceneSetup<LitScene> depthOfField() {
   const std::array<Color, 7> colours{Color(220, 50, 40), Color(230, 130, 30), Color(220, 200, 40),
                                      Color(60, 180, 70), Color(40, 150, 210), Color(70, 80, 220),
                                      Color(160, 70, 200)};
-  const Material paint = material(0.3, 0.5, 80);
+  const Material paint = Material::course(0.3, 0.5, 80);
   for (int i = 0; i < 7; ++i)
     s.add(Sphere(Point(-2.4 + 0.9 * i, 0.5, 2 - 3 * i), 0.5),
           colours[static_cast<std::size_t>(i)] * 0.6, paint);
@@ -417,13 +416,13 @@ SceneSetup<LitScene> superSampling() {
   LitScene s = darkRoom("super-sampling");
   addFloorBoard(s, -6, -14, 12, 20);
   // A glossy sphere (its beam off until glossyGrid > 1), two coloured spheres further back.
-  Material glossy = material(0.1, 0.6, 100, 0, 0.8);
+  Material glossy = Material::course(0.1, 0.6, 100, 0, 0.8);
   glossy.reflectedBeam = {1, 0.08, 1};
   s.add(Sphere(Point(-1.3, 1, 0), 1), Color(8, 8, 10), glossy);
-  s.add(Sphere(Point(1.2, 0.6, -4.5), 0.6), Color(150, 40, 30), material(0.4, 0.5, 60));
-  s.add(Sphere(Point(-0.4, 0.6, -9), 0.6), Color(30, 80, 150), material(0.4, 0.5, 60));
+  s.add(Sphere(Point(1.2, 0.6, -4.5), 0.6), Color(150, 40, 30), Material::course(0.4, 0.5, 60));
+  s.add(Sphere(Point(-0.4, 0.6, -9), 0.6), Color(30, 80, 150), Material::course(0.4, 0.5, 60));
   // A pane of glass in front of the right half of the red sphere (clear until frostedGrid > 1).
-  Material glass = material(0.05, 0.4, 60, 0.85, 0.05);
+  Material glass = Material::course(0.05, 0.4, 60, 0.85, 0.05);
   glass.refractedBeam = {1, 0.08, 1};
   s.add(Polygon{Point(1, 0.1, -2.5), Point(3, 0.1, -2.5), Point(3, 2.3, -2.5), Point(1, 2.3, -2.5)},
         Color(4, 6, 8), glass);

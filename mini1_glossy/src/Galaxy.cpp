@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "CourseMaterial.h"
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
 #include "geometries/Sphere.h"
@@ -50,8 +49,8 @@ Point placeInDisc(double x, double y, double z) {
 }  // namespace
 
 void GalaxyParams::validate() const {
-  if (arms < 1 || arms > 1000) badParam("arms", arms, 1, 1000);
-  if (perArm < 1 || perArm > 1'000'000) badParam("perArm", perArm, 1, 1'000'000);
+  if (arms < 1 || arms > MAX_ARMS) badParam("arms", arms, 1, MAX_ARMS);
+  if (perArm < 1 || perArm > MAX_PER_ARM) badParam("perArm", perArm, 1, MAX_PER_ARM);
   if (stars < 0 || stars > MAX_STARS) badParam("stars", stars, 0, MAX_STARS);
 }
 
@@ -73,15 +72,16 @@ GalaxySetup galaxy(const GalaxyParams& p) {
   s.appearanceIndex.reserve(static_cast<std::size_t>(positions + 110));
 
   // Floor, pedestal, glass box, frame.
-  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(30, 40, 70), material(1, 0, 0));
-  const std::uint32_t brown = s.addAppearance(Color(80, 40, 5), material(0.5, 0.35, 10));
+  s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(30, 40, 70), Material::course(1, 0, 0));
+  const std::uint32_t brown = s.addAppearance(Color(80, 40, 5), Material::course(0.5, 0.35, 10));
   addBox(s, {-7, 2, -7}, {19, 4, 15}, brown);
   addBox(s, {-7.5, 0, -7.5}, {19.5, 2, 15.5}, brown);
-  Material glassMaterial = material(0.35, 0.4, 10, 0.85, 0.2);
+  Material glassMaterial = Material::course(0.35, 0.4, 10, 0.85, 0.2);
   if (p.diffusion) glassMaterial.reflectedBeam = glassMaterial.refractedBeam = {12, 0.2, 10};
   const std::uint32_t glass = s.addAppearance(Color(20, 25, 25), glassMaterial);
   addBox(s, {-6.5, 4, -6.5}, {18.5, 15, 14.5}, glass);
-  const std::uint32_t metal = s.addAppearance(Color(45, 30, 30), material(0.5, 0.35, 10, 0, 0.05));
+  const std::uint32_t metal =
+      s.addAppearance(Color(45, 30, 30), Material::course(0.5, 0.35, 10, 0, 0.05));
   constexpr double w = 0.15;  // half the bars' width
   for (const double x : {-6.5, 18.5})
     for (const double z : {-6.5, 14.5})
@@ -92,7 +92,7 @@ GalaxySetup galaxy(const GalaxyParams& p) {
     addBox(s, {x - w, 15 - w, -6.5 + w}, {x + w, 15 + w, 14.5 - w}, metal);  // top edges along z
 
   // The galaxy.
-  const Material starMaterial = material(0.2, 0.33, 10);
+  const Material starMaterial = Material::course(0.2, 0.33, 10);
   const std::uint32_t lightBlue = s.addAppearance(Color(80, 255, 230), starMaterial);
   const std::uint32_t nearWhite = s.addAppearance(Color(200, 250, 255), starMaterial);
   const double starRadius = 0.05 * std::sqrt(50.0 / m);
@@ -126,7 +126,7 @@ GalaxySetup galaxy(const GalaxyParams& p) {
   }
   const Color coreColor(255, 220, 110);
   s.add(Sphere(Point(4, 8, 4), 1), coreColor, starMaterial);
-  s.add(Sphere(Point(4, 8, 4), 1.3), coreColor * 0.3, material(0.1, 0.9, 10, 0.9));
+  s.add(Sphere(Point(4, 8, 4), 1.3), coreColor * 0.3, Material::course(0.1, 0.9, 10, 0.9));
 
   // The lights.
   const auto spot = [&](const Color& c, const Point& at, const Vector& along) {

@@ -15,17 +15,6 @@ namespace course {
 
 namespace {
 
-/// A material from the course's setters: kD, kS, nSh, kT, kR (all channels equal).
-Material material(double kD, double kS, int shininess, double kT = 0, double kR = 0) {
-  Material m;
-  m.kD = Double3(kD);
-  m.kS = Double3(kS);
-  m.shininess = shininess;
-  m.kT = Double3(kT);
-  m.kR = Double3(kR);
-  return m;
-}
-
 /// The allFeatures camera: at `location` looking at (0,60,0), up +Y, view plane 200x200,
 /// 1200x1200 pixels.
 CameraSpec allFeaturesCamera(const Point& location, double distance) {
@@ -39,13 +28,14 @@ LitScene allFeaturesScene(const char* name) {
   s.ambientLight = AmbientLight(Color::WHITE, 0.005);
 
   // The floor y = 0.
-  s.add(Plane(Point::ZERO, Vector(0, 1, 0)), Color(30, 40, 70), material(0.9, 0, 30, 0, 0.05));
+  s.add(Plane(Point::ZERO, Vector(0, 1, 0)), Color(30, 40, 70),
+        Material::course(0.9, 0, 30, 0, 0.05));
 
   // The bi-pyramid: apexes (0,0,0) and (0,120,0) around the square y = 60, corners (±30,±30).
   const Point bottom(0, 0, 0), top(0, 120, 0);
   const std::array<Point, 4> square{Point(30, 60, 30), Point(30, 60, -30), Point(-30, 60, -30),
                                     Point(-30, 60, 30)};
-  const Material glassy = material(0.5, 0.5, 60, 0.3);
+  const Material glassy = Material::course(0.5, 0.5, 60, 0.3);
   for (int i = 0; i < 4; ++i) {
     s.add(Triangle(bottom, square[i], square[(i + 1) % 4]), Color(35, 120, 280), glassy);
   }
@@ -53,13 +43,14 @@ LitScene allFeaturesScene(const char* name) {
     s.add(Triangle(top, square[i], square[(i + 1) % 4]), Color(35, 140, 240), glassy);
   }
   // The mirror-like sphere inside the pyramid, and the reflective green one further back.
-  s.add(Sphere(Point(0, 60, 0), 20), Color(100, 100, 100), material(0.5, 0.5, 60, 0, 0.8));
-  s.add(Sphere(Point(-170, 30, -200), 20), Color(10, 50, 15), material(0.4, 0.6, 10, 0, 0.55));
+  s.add(Sphere(Point(0, 60, 0), 20), Color(100, 100, 100), Material::course(0.5, 0.5, 60, 0, 0.8));
+  s.add(Sphere(Point(-170, 30, -200), 20), Color(10, 50, 15),
+        Material::course(0.4, 0.6, 10, 0, 0.55));
 
   // The transparent cube x, z in [30,50], y in [5,25]. The catalogue gives no shininess: the
   // course's default 0. Faces in the order front, top, right, back, bottom, left, alternating
   // the two reds, so every pair of opposite faces differs.
-  const Material cube = material(0.5, 0.3, 0, 0.45);
+  const Material cube = Material::course(0.5, 0.3, 0, 0.45);
   const double x0 = 30, x1 = 50, y0 = 5, y1 = 25, z0 = 30, z1 = 50;
   const Color red1(255, 50, 50), red2(300, 20, 20);
   s.add(Polygon{Point(x0, y0, z1), Point(x1, y0, z1), Point(x1, y1, z1), Point(x0, y1, z1)}, red1,
@@ -76,7 +67,7 @@ LitScene allFeaturesScene(const char* name) {
         cube);  // left x = 30
 
   // The small glass sphere wrapping the point light.
-  s.add(Sphere(Point(-20, 3.5, 40), 3), Color(120, 120, 120), material(0, 0, 0, 0.8));
+  s.add(Sphere(Point(-20, 3.5, 40), 3), Color(120, 120, 120), Material::course(0, 0, 0, 0.8));
 
   s.addLight(PointLight(Color(200, 200, 200), Point(-20, 3, 40)).setKl(0.01).setKq(0.001));
   s.addLight(SpotLight(Color(100, 180, 210), Point(100, 80, 0), Vector(-100, -30, 0))
@@ -91,8 +82,8 @@ LitScene allFeaturesScene(const char* name) {
 SceneSetup<LitScene> twoSpheres() {
   SceneSetup<LitScene> s;
   s.scene.name = "refractionTwoSpheres";
-  s.scene.add(Sphere(Point(0, 0, -50), 50), Color::BLUE, material(0.4, 0.3, 100, 0.3));
-  s.scene.add(Sphere(Point(0, 0, -50), 25), Color::RED, material(0.5, 0.5, 100));
+  s.scene.add(Sphere(Point(0, 0, -50), 50), Color::BLUE, Material::course(0.4, 0.3, 100, 0.3));
+  s.scene.add(Sphere(Point(0, 0, -50), 25), Color::RED, Material::course(0.5, 0.5, 100));
   s.scene.addLight(SpotLight(Color(1000, 600, 0), Point(-100, -100, 500), Vector(-1, -1, -2))
                        .setKl(0.0004)
                        .setKq(0.0000006));
@@ -104,12 +95,13 @@ SceneSetup<LitScene> twoSpheresOnMirrors() {
   SceneSetup<LitScene> s;
   s.scene.name = "reflectionTwoSpheresMirrored";
   s.scene.ambientLight = AmbientLight(Color::WHITE, 0.1);
-  Material outer = material(0.25, 0.25, 20);
+  Material outer = Material::course(0.25, 0.25, 20);
   outer.kT = Double3(0.5, 0, 0);
   s.scene.add(Sphere(Point(-950, -900, -1000), 400), Color(0, 50, 100), outer);
-  s.scene.add(Sphere(Point(-950, -900, -1000), 200), Color(100, 50, 20), material(0.25, 0.25, 20));
+  s.scene.add(Sphere(Point(-950, -900, -1000), 200), Color(100, 50, 20),
+              Material::course(0.25, 0.25, 20));
   s.scene.add(Triangle(Point(1500, -1500, -1500), Point(-1500, 1500, -1500), Point(670, 670, 3000)),
-              Color(20, 20, 20), material(0, 0, 0, 0, 1));
+              Color(20, 20, 20), Material::course(0, 0, 0, 0, 1));
   Material tinted;
   tinted.kR = Double3(0.5, 0, 0.4);
   s.scene.add(
@@ -127,10 +119,10 @@ SceneSetup<LitScene> trianglesTransparentSphere() {
   s.scene.name = "refractionShadow";
   s.scene.ambientLight = AmbientLight(Color::WHITE, 0.15);
   s.scene.add(Triangle(Point(-150, -150, -115), Point(150, -150, -135), Point(75, 75, -150)),
-              Color::BLACK, material(0.5, 0.5, 60));
+              Color::BLACK, Material::course(0.5, 0.5, 60));
   s.scene.add(Triangle(Point(-150, -150, -115), Point(-70, 70, -140), Point(75, 75, -150)),
-              Color::BLACK, material(0.5, 0.5, 60));
-  s.scene.add(Sphere(Point(60, 50, -50), 30), Color::BLUE, material(0.2, 0.2, 30, 0.6));
+              Color::BLACK, Material::course(0.5, 0.5, 60));
+  s.scene.add(Sphere(Point(60, 50, -50), 30), Color::BLUE, Material::course(0.2, 0.2, 30, 0.6));
   s.scene.addLight(
       SpotLight(Color(700, 400, 400), Point(60, 50, 0), Vector(0, 0, -1)).setKl(4e-5).setKq(2e-7));
   s.camera = CameraSpec::squareView(Point(0, 0, 1000), Vector(0, 0, -1), 200, 1000, 600);
@@ -149,16 +141,17 @@ SceneSetup<LitScene> hallOfMirrors() {
   SceneSetup<LitScene> s;
   s.scene.name = "hallOfMirrors";
   s.scene.ambientLight = AmbientLight(Color::WHITE, 0.05);
-  const Material mirror = material(0, 0, 0, 0, 0.9);
+  const Material mirror = Material::course(0, 0, 0, 0, 0.9);
   s.scene.add(Polygon{Point(-400, -50, -150), Point(400, -50, -150), Point(400, 250, -150),
                       Point(-400, 250, -150)},
               Color(5, 5, 8), mirror);
   s.scene.add(Polygon{Point(-400, -50, 150), Point(-400, 250, 150), Point(400, 250, 150),
                       Point(400, -50, 150)},
               Color(5, 5, 8), mirror);
-  s.scene.add(Plane(Point(0, -50, 0), Vector(0, 1, 0)), Color(40, 40, 40), material(0.6, 0.2, 20));
-  s.scene.add(Sphere(Point(-40, -20, -60), 30), Color(120, 10, 10), material(0.5, 0.5, 60));
-  s.scene.add(Sphere(Point(50, -30, 40), 20), Color(10, 100, 20), material(0.5, 0.5, 60));
+  s.scene.add(Plane(Point(0, -50, 0), Vector(0, 1, 0)), Color(40, 40, 40),
+              Material::course(0.6, 0.2, 20));
+  s.scene.add(Sphere(Point(-40, -20, -60), 30), Color(120, 10, 10), Material::course(0.5, 0.5, 60));
+  s.scene.add(Sphere(Point(50, -30, 40), 20), Color(10, 100, 20), Material::course(0.5, 0.5, 60));
   s.scene.addLight(PointLight(Color(400, 400, 350), Point(0, 150, 0)).setKl(0.001).setKq(0.00005));
   s.camera = CameraSpec::squareView(Point(60, 40, 120), Point(-20, -10, -150), 200, 150, 600);
   return s;

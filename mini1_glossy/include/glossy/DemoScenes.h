@@ -95,7 +95,7 @@ void checkDemoTable(std::span<const DemoScene> table);
 /// about a tenth of the view's width); y is up, the floors are the plane y = 0.
 namespace demo {
 
-/// Four mirror spheres (radius 1, kR 0.8, kS 0.6 nSh 100) in a row on a 20 x 18 checkerboard,
+/// Four mirror spheres (radius 1, kR 0.8, kS 0.6 nSh 100) in a row on a 24 x 32 checkerboard,
 /// their reflected beams of radius 0, 0.03, 0.08 and 0.2 at distance 1 (N = 8, 52 rays): sharp,
 /// then glossier. Behind the camera, seen only in the mirrors, a wall of coloured stripes. A
 /// point light; 640 x 320.
@@ -108,15 +108,16 @@ SceneSetup<LitScene> glossySpheres();
 SceneSetup<LitScene> frostedGlass();
 
 /// A floor, a sphere resting on it, a floating sphere and a post (a cylinder), under a light of
-/// radius 1.2 at (-0.5, 6, 2) sampled by 32 shadow rays per shaded point; 500 x 500.
+/// radius 1.2 at (-0.5, 6, 2) sampled by 32 shadow rays per shaded point; 600 x 400.
 SceneSetup<LitScene> softShadows();
 
-/// An 80 x 96 checkerboard of emitting black and white tiles (no lights) seen from 1.3 above it,
+/// A 96 x 96 checkerboard of emitting black and white tiles (no lights), trimmed to what the
+/// camera sees, seen from 1.6 above it,
 /// receding towards the horizon, and two flat discs; 400 x 300. Its table entry renders it with
 /// 4 x 4 jittered samples per pixel.
 SceneSetup<LitScene> antialiasing();
 
-/// Seven spheres of radius 0.5 on a checkerboard, 3.5 apart in depth, seen through a lens of
+/// Seven spheres of radius 0.5 on a checkerboard, 3 apart in depth, seen through a lens of
 /// radius 0.2 focused on the fourth one's centre; 640 x 360. Its table entry traces 24 lens
 /// samples per pixel.
 SceneSetup<LitScene> depthOfField();

@@ -16,7 +16,9 @@
 namespace rt {
 
 struct GalaxyParams {
-  /// The most stars the generator accepts.
+  /// The most arms, positions per arm and stars the generator accepts.
+  static constexpr int MAX_ARMS = 1000;
+  static constexpr int MAX_PER_ARM = 1'000'000;
   static constexpr long MAX_STARS = 10'000'000;
 
   int arms = 21;           ///< spiral arms; every seventh from the fourth (4, 11, 18) holds suns
@@ -25,7 +27,8 @@ struct GalaxyParams {
   bool diffusion = true;   ///< the glass box's beams (the seed's diffused glass)
   std::uint64_t seed = 1;  ///< the generator's jitter and star colours
 
-  /// @throws std::invalid_argument for arms outside 1..1000, perArm outside 1..1'000'000, stars
+  /// @throws std::invalid_argument for arms outside 1..MAX_ARMS, perArm outside 1..MAX_PER_ARM,
+  /// stars
   ///         outside 0..MAX_STARS, naming the parameter.
   void validate() const;
   /// The positions per arm these parameters give (perArm, or stars / arms rounded, at least 1).

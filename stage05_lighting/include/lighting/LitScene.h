@@ -21,7 +21,7 @@ struct Appearance {
 ///
 /// Looks are kept in a table: appearances holds each distinct look once, and appearanceIndex[i]
 /// is the row of geometries[i]. A million stars of one material then cost 4 bytes each for their
-/// looks, not the size of an Appearance (136 bytes). add(shape, emission, material) makes a new
+/// looks, not the size of an Appearance (184 bytes). add(shape, emission, material) makes a new
 /// row for each shape (what the course's scenes do); a scene with many shapes of few looks adds
 /// the rows once with addAppearance and the shapes with add(shape, row).
 ///

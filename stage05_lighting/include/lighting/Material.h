@@ -40,6 +40,18 @@ struct Material {
   ///         finite number, whose radius is negative or not finite, or whose grid is outside
   ///         1..BeamSettings::MAX_GRID; the message names the field.
   void validate() const;
+
+  /// A material as the course's setters make it: kD, kS, nSh, kT, kR, each the same on every
+  /// channel; ior 1 and no beams.
+  static Material course(double kD, double kS, int shininess, double kT = 0, double kR = 0) {
+    Material m;
+    m.kD = Double3(kD);
+    m.kS = Double3(kS);
+    m.kT = Double3(kT);
+    m.kR = Double3(kR);
+    m.shininess = shininess;
+    return m;
+  }
 };
 
 }  // namespace rt

@@ -37,8 +37,8 @@ bool parseOnOff(const std::string& value, const char* what) {
 
 SceneDocument galaxyDocument(const SceneParams& p) {
   GalaxyParams params;
-  params.arms = parseInt(p.at("arms"), "--param arms", 1, 1000);
-  params.perArm = parseInt(p.at("perArm"), "--param perArm", 1, 1'000'000);
+  params.arms = parseInt(p.at("arms"), "--param arms", 1, GalaxyParams::MAX_ARMS);
+  params.perArm = parseInt(p.at("perArm"), "--param perArm", 1, GalaxyParams::MAX_PER_ARM);
   params.stars =
       parseInt(p.at("stars"), "--param stars", 0, static_cast<int>(GalaxyParams::MAX_STARS));
   params.diffusion = parseOnOff(p.at("diffusion"), "diffusion");
