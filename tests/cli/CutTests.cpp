@@ -131,6 +131,13 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
               level.err.find("render.maxLevel: the key 'maxLevel' needs stage07_reflections"))
         << level.err;
   }
+  // TC03: a file without render.tracer renders in every cut, with the build's highest tracer
+  writeText(dir + "/plain.json", "{" + camera + "}");
+  const Outcome plain = run({"render", dir + "/plain.json", "-o", dir + "/p.png", "--quiet"});
+  EXPECT_EQ(0, plain.code) << plain.err;
+  ASSERT_NE(nullptr, tracerNamed(""));
+  EXPECT_NE(std::string::npos, plain.err.find(", tracer " + tracerNamed("")->name + ","))
+      << plain.err;
   // TC11: a key no stage has is an unknown key in every cut
   writeText(dir + "/typo.json", "{" + camera + ",\n \"backgroud\": [0, 0, 0]}");
   const Outcome typo = run({"render", dir + "/typo.json", "-o", dir + "/t.png", "--silent"});

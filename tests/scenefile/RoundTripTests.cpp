@@ -212,6 +212,7 @@ TEST(DumpSceneTest, Layout) {
   // order.
   SceneDocument doc = baseDocument();
   litScene(doc).add(Sphere(Point(0, 0, -1), 0.5));
+  doc.render.tracer = "whitted";  // (a document without one writes no tracer key)
   EXPECT_EQ(dumpScene(doc),
             "{\n"
             "  \"camera\": {\n"

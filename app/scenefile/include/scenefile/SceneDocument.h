@@ -24,7 +24,7 @@ namespace rt {
 
 /// The `render` object of a scene file.
 struct RenderSettings {
-  std::string tracer = "whitted";   ///< which stage's tracer renders it (the highest by default)
+  std::string tracer;               ///< which stage's tracer renders it; "": the build's highest
   std::uint64_t seed = 0;           ///< the random numbers' seed: changes the noise, nothing else
   int maxLevel = 10;                ///< stage 7: the recursion's depth
   double minK = 0.001;              ///< stage 7: the path weight's cut-off
