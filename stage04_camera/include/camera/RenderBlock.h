@@ -86,6 +86,16 @@ class CenterSampler final : public PixelSampler {
   int samplesPerPixel() const noexcept override { return 1; }
 };
 
+/// What every block of one render shares, read-only and from any thread: the camera that makes
+/// the rays, the tracer that colours them and the sampler that chooses them per pixel. The row
+/// loop of Camera::renderImage, the tile pool of the second mini project, `rt bench` and the
+/// distributed renderer all take one; the three must outlive it.
+struct RenderContext {
+  const Camera& camera;
+  const RayTracer& tracer;
+  const PixelSampler& sampler;
+};
+
 /// Renders block into image: each pixel's colour by sampler, with tracer, through camera.
 /// Everything is checked once, before the first ray; then nothing allocates or throws unless
 /// the tracer does.
