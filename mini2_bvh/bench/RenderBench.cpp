@@ -18,7 +18,8 @@
 //    middle of the seed's view): the generation time of the scene and the build time and size of
 //    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
 //    and N threads (medians of R renders, alternately), and the peak resident size of a process
-//    that did only that (each galaxy is measured in a child process of its own: bvh/Measure.h).
+//    that did only that (each galaxy is measured in a child process of its own:
+//    benchmark/Measure.h).
 // A timing is never a test: this prints figures, it asserts nothing.
 
 #include <algorithm>
@@ -29,10 +30,10 @@
 #include <string>
 #include <vector>
 
-#include "bvh/Measure.h"
-#include "bvh/TileGrid.h"
-#include "bvh/TilePool.h"
+#include "benchmark/Measure.h"
 #include "camera/Camera.h"
+#include "parallel/TileGrid.h"
+#include "parallel/TilePool.h"
 
 namespace rt {
 namespace {
@@ -63,7 +64,7 @@ Comparison compareThreads(const Camera& camera, const RayTracer& tracer, const B
     for (int k = 0; k < 2; ++k) {
       const double cpuStart = processCpuSeconds();
       const RenderResult result =
-          renderImage(camera, tracer, sampler, images[k],
+          renderImage({camera, tracer, sampler}, images[k],
                       {.threads = k == 0 ? 1 : o.threads, .tileSize = o.tileSize});
       cpu[k].push_back(processCpuSeconds() - cpuStart);
       wall[k].push_back(result.seconds);

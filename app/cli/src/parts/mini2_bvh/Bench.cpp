@@ -4,7 +4,7 @@
 // The timing table of the course: one scene rendered with the seed report's rows (no
 // acceleration on one thread; threads; threads + CBR; threads + CBR + BVH) beside the seed's own
 // times, then by every stage's tracer through the BVH on every thread; or the galaxy's star
-// scaling, each galaxy measured in a process of its own (bvh/Measure.h, which
+// scaling, each galaxy measured in a process of its own (benchmark/Measure.h, which
 // mini2_render_bench uses too).
 #include "Bench.h"
 
@@ -23,10 +23,9 @@
 #include <CLI/App.hpp>
 
 #include "BenchTable.h"
-#include "CommandTable.h"
+#include "CommandRegistration.h"
+#include "benchmark/Measure.h"
 #include "bvh/Acceleration.h"
-#include "bvh/Measure.h"
-#include "bvh/TilePool.h"
 #include "camera/AtomicFile.h"
 #include "camera/Camera.h"
 #include "cli/CommandLine.h"
@@ -34,6 +33,7 @@
 #include "cli/Tracers.h"
 #include "cli/Values.h"
 #include "common/Integers.h"
+#include "parallel/TilePool.h"
 
 namespace rt::cli {
 
@@ -244,7 +244,7 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       RenderOptions options;
       options.threads = row.threads;
       options.stop = io.stop;
-      const RenderResult result = renderImage(camera, *rows[i].tracer, *sampler, image, options);
+      const RenderResult result = renderImage({camera, *rows[i].tracer, *sampler}, image, options);
       if (result.interrupted || (io.stop && io.stop->load())) return interrupted(where, args, io);
       seconds[i].push_back(result.seconds);
       row.counts = result.counts;  // the same every repeat: the render is deterministic
@@ -343,8 +343,8 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
                           .buildSeconds = g.buildSeconds};
           std::vector<double> seconds;
           for (int r = 0; r < repeat && !f.interrupted; ++r) {
-            const RenderResult result =
-                renderImage(camera, *g.tracer, sampler, image, {.threads = threads, .stop = stop});
+            const RenderResult result = renderImage({camera, *g.tracer, sampler}, image,
+                                                    {.threads = threads, .stop = stop});
             seconds.push_back(result.seconds);
             f.interrupted = result.interrupted;
           }
