@@ -1,6 +1,6 @@
-// rt bench --scaling: the galaxy without diffusion at 10^3 to 10^6 stars (--stars), each measured
-// in a process of its own (benchmark/Measure.h, which mini2_render_bench uses too): the BVH's
-// build, the render's wall time, the peak resident size and the bytes per star.
+// rt bench --scaling: the galaxy without diffusion at 10^3 to 10^6 stars (--stars), each
+// measured in a process of its own (mini2's benchmark/GalaxyScaling.h, which mini2_render_bench
+// uses too): the BVH's build, the render's wall time, the peak resident size, the bytes per star.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -11,11 +11,10 @@
 #include "Bench.h"
 #include "BenchOutput.h"
 #include "BenchTable.h"
+#include "benchmark/GalaxyScaling.h"
 #include "benchmark/Measure.h"
-#include "camera/Camera.h"
 #include "cli/Values.h"
 #include "common/Integers.h"
-#include "parallel/TilePool.h"
 
 namespace rt::cli {
 
@@ -37,13 +36,6 @@ namespace {
 
 /// The scaling's image: the middle of the reference view, as mini2_render_bench's.
 constexpr int SCALING_SIDE = 400;
-
-/// What the child process measuring one galaxy sends back.
-struct GalaxyFigures {
-  std::uint64_t shapes = 0;
-  double buildSeconds = 0, renderSeconds = 0;
-  bool interrupted = false;
-};
 
 }  // namespace
 
@@ -87,36 +79,16 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
                               std::to_string(stars.size()) + " (" + std::to_string(n) + " stars)";
     io.err << "rt bench: galaxy " << i + 1 << "/" << stars.size() << ": " << n << " stars, " << nX
            << "x" << nY << ", " << threadsText(threads) << std::endl;
-    const std::atomic<bool>* stop = io.stop;
-    const int repeat = args.repeat;
-    const auto measured = measureInChildProcess<GalaxyFigures>(
-        [n, nX, nY, threads, repeat, stop] {
-          const GalaxyRender g(GalaxyParams{.stars = n, .diffusion = false});
-          const Camera camera = seedView(g.setup, nX, nY);
-          const CenterSampler sampler;
-          Image image(nX, nY);
-          GalaxyFigures f{.shapes = g.setup.scene.geometries.size(),
-                          .buildSeconds = g.buildSeconds};
-          std::vector<double> seconds;
-          for (int r = 0; r < repeat && !f.interrupted; ++r) {
-            const RenderResult result = renderImage({camera, *g.tracer, sampler}, image,
-                                                    {.threads = threads, .stop = stop});
-            seconds.push_back(result.seconds);
-            f.interrupted = result.interrupted;
-          }
-          f.renderSeconds = median(seconds);
-          return f;
-        },
-        io.stop);
-    if (!measured || measured->value.interrupted) return benchInterrupted(where, args, io);
-    const GalaxyFigures& f = measured->value;
-    const std::int64_t grown = std::max<std::int64_t>(0, measured->peakBytes - *baseline);
+    const std::optional<GalaxyMeasurement> m =
+        measureGalaxy(n, nX, nY, {.threads = {threads}, .repeat = args.repeat, .stop = io.stop});
+    if (!m) return benchInterrupted(where, args, io);
+    const std::int64_t grown = std::max<std::int64_t>(0, m->peakBytes - *baseline);
     table.rows.push_back(
         {.stars = n,
-         .shapes = f.shapes,
-         .buildSeconds = f.buildSeconds,
-         .renderSeconds = f.renderSeconds,
-         .peakBytes = measured->peakBytes,
+         .shapes = m->shapes,
+         .buildSeconds = m->buildSeconds,
+         .renderSeconds = m->renders.wall[0],
+         .peakBytes = m->peakBytes,
          .bytesPerStar = std::llround(static_cast<double>(grown) / static_cast<double>(n))});
   }
   emit(
