@@ -155,7 +155,12 @@ std::optional<std::string> validationFailure(CLI::App& command) {
         } catch (const CLI::OptionNotFound&) {
           break;  // past the last
         }
-        const std::string message = (*validator)(value);
+        std::string message;
+        try {
+          message = (*validator)(value);
+        } catch (const CLI::ValidationError& e) {  // CLI11's own validators may throw theirs
+          message = e.what();
+        }
         if (!message.empty()) return o->get_name() + ": " + message;
       }
     }
