@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Image.h"
 #include "cli/BuiltinScenes.h"
 #include "cli/CommandLine.h"

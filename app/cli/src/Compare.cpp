@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 
 namespace rt::cli {
 

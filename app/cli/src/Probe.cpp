@@ -3,7 +3,7 @@
 #include <ostream>
 #include <utility>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Camera.h"
 #include "cli/Registry.h"
 #include "cli/Tracers.h"

@@ -7,7 +7,7 @@
 #include <optional>
 #include <ostream>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Camera.h"
 #include "camera/ImageWriter.h"
 #include "camera/RenderBlock.h"

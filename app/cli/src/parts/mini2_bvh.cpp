@@ -5,11 +5,11 @@
 #include <CLI/App.hpp>
 
 #include "bvh/Acceleration.h"
-#include "bvh/TilePool.h"
-#include "mini2_bvh/Bench.h"
 #include "cli/CommandLine.h"
 #include "cli/Registry.h"
 #include "common/NearestName.h"
+#include "mini2_bvh/Bench.h"
+#include "parallel/TilePool.h"
 
 namespace rt::cli {
 
@@ -23,7 +23,7 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
     options.stop = job.stop;
     options.donePixels = &job.donePixels;
     options.doneRays = &job.doneRays;
-    const RenderResult r = renderImage(job.camera, job.tracer, job.sampler, job.image, options);
+    const RenderResult r = renderImage({job.camera, job.tracer, job.sampler}, job.image, options);
     return RenderOutcome{r.counts, r.interrupted, r.threads};
   };
   registry.commands.push_back(addBenchCommand);

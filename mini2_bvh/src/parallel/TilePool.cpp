@@ -1,4 +1,4 @@
-#include "bvh/TilePool.h"
+#include "parallel/TilePool.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "bvh/TileGrid.h"
 #include "camera/Camera.h"
+#include "parallel/TileGrid.h"
 
 namespace rt {
 
@@ -100,8 +100,10 @@ int requestedThreads(int threads) {
 
 }  // namespace
 
-RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,
-                         Image& image, const RenderOptions& options) {
+RenderResult renderImage(const RenderContext& context, Image& image, const RenderOptions& options) {
+  const Camera& camera = context.camera;
+  const RayTracer& tracer = context.tracer;
+  const PixelSampler& sampler = context.sampler;
   // Everything is checked on the calling thread, before a thread is started.
   int threads = requestedThreads(options.threads);
   if (options.tileSize < 1)

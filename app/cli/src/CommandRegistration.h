@@ -1,5 +1,7 @@
 #pragma once
-// Internal to rt_cli: each command adds itself to rt's command line (Commands.cpp gathers them).
+// Internal to rt_cli: the commands' registration functions (each adds its command to rt's command
+// line; Commands.cpp gathers them) and the pieces they share: the scene arguments, the image-size
+// check, the scene warnings.
 
 #include <optional>
 #include <string>
