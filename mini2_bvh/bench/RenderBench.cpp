@@ -63,7 +63,7 @@ Comparison compareThreads(const Camera& camera, const RayTracer& tracer, const B
     for (int k = 0; k < 2; ++k) {
       const double cpuStart = processCpuSeconds();
       const RenderResult result =
-          renderImage(camera, tracer, sampler, images[k],
+          renderImage({camera, tracer, sampler}, images[k],
                       {.threads = k == 0 ? 1 : o.threads, .tileSize = o.tileSize});
       cpu[k].push_back(processCpuSeconds() - cpuStart);
       wall[k].push_back(result.seconds);
@@ -98,7 +98,7 @@ void tileBalance(const Camera& camera, const RayTracer& tracer, int threads) {
     std::vector<double> cost(grid.size());
     for (std::uint64_t i = 0; i < grid.size(); ++i) {
       const double start = threadCpuSeconds();
-      renderBlock(camera, tracer, sampler, grid.tile(i), image);
+      renderBlock({camera, tracer, sampler}, grid.tile(i), image);
       cost[i] = threadCpuSeconds() - start;
     }
     // The workers' next free times, earliest first.

@@ -69,7 +69,7 @@ int render(const RenderArgs& args, const Io& io) {
     // 2 on): it sees a stop request (Ctrl-C) within a block of pixels, adds each block's counts
     // once and reports its pixels and rays to the progress thread once.
     outcome = registry.render(
-        {camera, *tracer, *sampler, image, doc.render.threads, io.stop, donePixels, doneRays});
+        {{camera, *tracer, *sampler}, image, doc.render.threads, io.stop, donePixels, doneRays});
     // A Ctrl-C that arrives after the last block still means "stop": nothing is written.
     interrupted = outcome.interrupted || (io.stop && io.stop->load());
   }  // the progress thread is stopped here, before anything else is printed

@@ -65,11 +65,10 @@ struct BuiltinScene {
   std::function<SceneDocument(const SceneParams& params)> make;
 };
 
-/// One render: the image of camera, every pixel by sampler, traced by tracer.
+/// One render: the image of the context's camera, every pixel by its sampler, traced by its
+/// tracer.
 struct RenderJob {
-  const Camera& camera;
-  const RayTracer& tracer;
-  const PixelSampler& sampler;
+  RenderContext context;
   Image& image;
   int threads;                             ///< 0: every core (when the build has threads)
   const std::atomic<bool>* stop;           ///< raised to stop (Ctrl-C); may be null

@@ -23,7 +23,7 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
     options.stop = job.stop;
     options.donePixels = &job.donePixels;
     options.doneRays = &job.doneRays;
-    const RenderResult r = renderImage(job.camera, job.tracer, job.sampler, job.image, options);
+    const RenderResult r = renderImage(job.context, job.image, options);
     return RenderOutcome{r.counts, r.interrupted, r.threads};
   };
   registry.commands.push_back(addBenchCommand);

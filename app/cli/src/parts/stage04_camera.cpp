@@ -15,14 +15,14 @@ namespace {
 /// each row's counts are added once, and its pixels reported to the progress thread once.
 RenderOutcome renderRows(const RenderJob& job) {
   RenderOutcome outcome;
-  const int nX = job.camera.nX(), nY = job.camera.nY();
+  const int nX = job.context.camera.nX(), nY = job.context.camera.nY();
   for (int y = 0; y < nY; ++y) {
     if (job.stop && job.stop->load(std::memory_order_relaxed)) {
       outcome.interrupted = true;
       return outcome;
     }
     const PixelBlock row{0, y, nX, y + 1};
-    const RayCounts counts = renderBlock(job.camera, job.tracer, job.sampler, row, job.image);
+    const RayCounts counts = renderBlock(job.context, row, job.image);
     outcome.counts += counts;
     job.donePixels.fetch_add(row.pixels(), std::memory_order_relaxed);
     job.doneRays.fetch_add(counts.total(), std::memory_order_relaxed);

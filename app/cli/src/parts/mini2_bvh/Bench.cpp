@@ -244,7 +244,7 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       RenderOptions options;
       options.threads = row.threads;
       options.stop = io.stop;
-      const RenderResult result = renderImage(camera, *rows[i].tracer, *sampler, image, options);
+      const RenderResult result = renderImage({camera, *rows[i].tracer, *sampler}, image, options);
       if (result.interrupted || (io.stop && io.stop->load())) return interrupted(where, args, io);
       seconds[i].push_back(result.seconds);
       row.counts = result.counts;  // the same every repeat: the render is deterministic
@@ -343,8 +343,8 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
                           .buildSeconds = g.buildSeconds};
           std::vector<double> seconds;
           for (int r = 0; r < repeat && !f.interrupted; ++r) {
-            const RenderResult result =
-                renderImage(camera, *g.tracer, sampler, image, {.threads = threads, .stop = stop});
+            const RenderResult result = renderImage({camera, *g.tracer, sampler}, image,
+                                                    {.threads = threads, .stop = stop});
             seconds.push_back(result.seconds);
             f.interrupted = result.interrupted;
           }
