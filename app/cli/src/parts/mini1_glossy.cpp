@@ -122,9 +122,9 @@ void registerCli_mini1_glossy(CliRegistry& registry) {
                                std::move(params),
                                [&entry](const SceneParams& p) { return demoDocument(entry, p); }});
   }
-  registry.makeSampler = [](const RenderSettings& settings) {
+  registry.makeSampler.supply("mini1_glossy", [](const RenderSettings& settings) {
     return makePixelSampler(samplingOf(settings));
-  };
+  });
 }
 
 }  // namespace rt::cli

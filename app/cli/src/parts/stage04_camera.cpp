@@ -78,10 +78,10 @@ void registerCli_stage04_camera(CliRegistry& registry) {
   registry.scenes.push_back(
       builtinScene("shapes", "one of each of the six shapes of stage 2, shown by their normals",
                    "normals", shapesScene));
-  registry.makeSampler = [](const RenderSettings& settings) {
+  registry.makeSampler.supply("stage04_camera", [](const RenderSettings& settings) {
     return std::unique_ptr<PixelSampler>(std::make_unique<CenterSampler>(settings.seed));
-  };
-  registry.render = renderRows;
+  });
+  registry.render.supply("stage04_camera", renderRows);
 }
 
 }  // namespace rt::cli
