@@ -61,7 +61,7 @@ Rendered render(const DemoSetup& d, int nX, int nY, std::uint64_t seed = 0) {
   SamplingSettings sampling = d.sampling;
   sampling.seed = seed;
   Rendered r{Image(nX, nY), {}};
-  r.counts = renderBlock(camera, tracer, *makePixelSampler(sampling), {0, 0, nX, nY}, r.image);
+  r.counts = renderBlock({camera, tracer, *makePixelSampler(sampling)}, {0, 0, nX, nY}, r.image);
   return r;
 }
 
@@ -338,7 +338,7 @@ TEST(DemoScenesTests, depthOfField) {
   const Rendered pinhole = render(pinholeSetup, 48, 27);
   EXPECT_EQ(48u * 27u, pinhole.counts.primary);
   Image centred(48, 27);
-  (void)renderBlock(cameraOf(pinholeSetup, 48, 27), BeamTracer(d.scene), CenterSampler(),
+  (void)renderBlock({cameraOf(pinholeSetup, 48, 27), BeamTracer(d.scene), CenterSampler()},
                     {0, 0, 48, 27}, centred);
   for (int y = 0; y < 27; ++y)
     for (int x = 0; x < 48; ++x)
@@ -402,8 +402,8 @@ TEST(DemoScenesTests, superSampling) {
   // TC01: every technique off: the Whitted tracer's image, bit for bit, with the same rays
   const Rendered beams = render(off, 40, 30);
   Image whitted(40, 30);
-  const RayCounts counts = renderBlock(cameraOf(off, 40, 30), WhittedTracer(off.scene),
-                                       CenterSampler(), {0, 0, 40, 30}, whitted);
+  const RayCounts counts = renderBlock(
+      {cameraOf(off, 40, 30), WhittedTracer(off.scene), CenterSampler()}, {0, 0, 40, 30}, whitted);
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 40; ++x)
       ASSERT_TRUE(sameBits(whitted.pixel(x, y), beams.image.pixel(x, y)));

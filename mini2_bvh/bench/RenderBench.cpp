@@ -67,7 +67,7 @@ void tileBalance(const Camera& camera, const RayTracer& tracer, int threads) {
     std::vector<double> cost(grid.size());
     for (std::uint64_t i = 0; i < grid.size(); ++i) {
       const double start = threadCpuSeconds();
-      renderBlock(camera, tracer, sampler, grid.tile(i), image);
+      renderBlock({camera, tracer, sampler}, grid.tile(i), image);
       cost[i] = threadCpuSeconds() - start;
     }
     // The workers' next free times, earliest first.

@@ -135,8 +135,8 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
     // The references, serial (stage 4's renderBlock over the whole image): the linear scan's
     // image, and the BVH's counts; the BVH's image is the linear scan's (part 1).
     Image linear(nX, nY), serial(nX, nY);
-    renderBlock(s.camera, *s.linear, *s.sampler, all, linear);
-    const RayCounts counts = renderBlock(s.camera, *s.accelerated, *s.sampler, all, serial);
+    renderBlock({s.camera, *s.linear, *s.sampler}, all, linear);
+    const RayCounts counts = renderBlock({s.camera, *s.accelerated, *s.sampler}, all, serial);
     ASSERT_EQ(firstDifference(linear, serial), "");
     EXPECT_GT(counts.total(), counts.primary);  // secondary or shadow rays were cast
     // ============ Equivalence Partitions Tests ==============

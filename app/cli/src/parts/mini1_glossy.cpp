@@ -74,9 +74,9 @@ void registerCli_mini1_glossy(CliRegistry& registry) {
     registry.scenes.push_back({entry.course.name, entry.course.description, "mini1_glossy", "beams",
                                demoParams(entry),
                                [&entry](const SceneParams& p) { return demoDocument(entry, p); }});
-  registry.makeSampler = [](const RenderSettings& settings) {
+  registry.makeSampler.supply("mini1_glossy", [](const RenderSettings& settings) {
     return makePixelSampler(samplingOf(settings));
-  };
+  });
 }
 
 }  // namespace rt::cli

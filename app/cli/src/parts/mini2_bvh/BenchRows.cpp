@@ -55,8 +55,8 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   if (args.full && (sceneArgs.width || sceneArgs.height))
     throw UsageError("--full: the scene's own resolution; give either --full or --width/--height");
   if (!args.full && !sceneArgs.width && !sceneArgs.height) sceneArgs.width = DEFAULT_WIDTH;
-  const SceneDocument doc = sceneFromArguments(sceneArgs);
-  checkImageFits(doc.camera.nX, doc.camera.nY);
+  const RenderRequest request = resolveRenderRequest(sceneArgs, {.makesImage = true});
+  const SceneDocument& doc = request.doc;
   const int threads = benchThreads(args);
 
   // The rows: the reference report's four with the scene's tracer, then every stage's tracer
