@@ -7,4 +7,5 @@ set(STAGE_TESTS
     tests/TubeTests.cpp
     tests/CylinderTests.cpp
     tests/GeometryTests.cpp
-    tests/TriangleMeshTests.cpp)
+    tests/TriangleMeshTests.cpp
+    tests/UtahTeapotTests.cpp)
