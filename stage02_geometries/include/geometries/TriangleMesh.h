@@ -65,11 +65,11 @@ class TriangleMesh {
   /// @param normals   empty (flat shading), or one per vertex: finite, not the zero vector (in the
   ///                  course's sense), any length; stored normalised.
   /// @throws std::invalid_argument, the message starting "TriangleMesh: " and naming the value
-  ///         and its place: no vertices or no triangles; a size requireFits refuses;
-  ///         "normals has N entries for M vertices"; "vertices[i] (x,y,z) ..." not finite;
-  ///         "normals[i] ..." not finite or zero; "triangles[t] (a,b,c): index b is out of range"
-  ///         ; "triangles[t] ...: its normal overflows" (coordinates beyond ~1e154); every
-  ///         triangle degenerate (none would be left).
+  ///         and its place, for: no vertices, or no triangles; a size requireFits refuses;
+  ///         "normals has N entries for M vertices"; "vertices[i] must be finite, got (x,y,z)";
+  ///         "normals[i] ..." not finite or zero; "triangles[t] (a,b,c): index b is out of
+  ///         range ..."; "triangles[t] ...: its normal overflows" (coordinates beyond ~1e154);
+  ///         every triangle of zero area (none would be left).
   TriangleMesh(std::vector<Point> vertices, std::vector<Indices> triangles,
                std::vector<Double3> normals = {});
 
