@@ -6,4 +6,6 @@ set(STAGE_TESTS
     tests/PolygonTests.cpp
     tests/TubeTests.cpp
     tests/CylinderTests.cpp
-    tests/GeometryTests.cpp)
+    tests/GeometryTests.cpp
+    tests/TriangleMeshTests.cpp
+    tests/UtahTeapotTests.cpp)
