@@ -11,11 +11,6 @@ namespace rt {
 
 namespace {
 
-constexpr double INV_PHI = 0.6180339887498949;  // (√5 − 1)/2
-
-/// x − floor(x) for x >= 0.
-double fraction(double x) noexcept { return x - std::floor(x); }
-
 /// A dimension far beyond what a path uses, for the per-cell lens shift: read with uniform(), a
 /// pure function of the cell's stream, whatever its samples draw.
 constexpr std::uint32_t LENS_SHIFT_DIMENSION = 0xfffffff0u;
@@ -61,9 +56,7 @@ Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
           px = x + p.u;
           py = y + p.v;
         }
-        const Sample2 onLens = lens ? squareToDisk({fraction((l + 0.5) / lensCount + shift.u),
-                                                    fraction(l * INV_PHI + shift.v)})
-                                    : Sample2{};
+        const Sample2 onLens = lens ? diskLatticePoint(l, lensCount, shift) : Sample2{};
         sum = sum + traceSample(camera, tracer, ctx, px, py, onLens).rgb();
       }
     }
