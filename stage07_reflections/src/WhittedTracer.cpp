@@ -89,7 +89,7 @@ Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, Sec
   const Double3 kkx = k * kx;
   // The course's cut-off (all three channels below minK); a zero weight is never cast, also
   // when minK is 0.
-  if (kkx.lowerThan(settings_.minK) || (kkx.x == 0 && kkx.y == 0 && kkx.z == 0)) {
+  if (kkx.lowerThan(settings_.minK) || kkx.isExactlyZero()) {
     return Color::BLACK;
   }
   // kx is a product of validated, non-negative coefficients: no check per ray.

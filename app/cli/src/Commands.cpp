@@ -234,7 +234,7 @@ void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, b
   const Double3& ambient = scene.ambientLight.intensity().rgb();
   const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
   if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
-      !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
+      !ambient.isExactlyZero())
     return;
   // The later stages' tracers, which show the lights (not the debugging views).
   std::string others;

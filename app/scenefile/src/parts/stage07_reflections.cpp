@@ -167,7 +167,7 @@ void warnOfMixedWinding(const Node& root) {
   std::map<std::uint32_t, std::vector<std::uint32_t>> facesByLook;
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
     const Material& m = scene.appearanceOf(i).material;
-    const bool refracts = m.ior != 1 && !(m.kT.x == 0 && m.kT.y == 0 && m.kT.z == 0);
+    const bool refracts = m.ior != 1 && !m.kT.isExactlyZero();
     if (refracts && !facePoints(shapes[i]).empty())
       facesByLook[scene.appearanceIndex[i]].push_back(i);
   }
