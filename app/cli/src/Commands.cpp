@@ -187,8 +187,7 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
       if (v.name == *arguments.view) chosen = &v;
     }
     if (!chosen) {
-      std::string known;
-      for (std::string_view n : names) known += (known.empty() ? "" : ", ") + std::string(n);
+      const std::string known = joinNames(names);
       throw UsageError("--view: the scene has no view '" + *arguments.view + "'" +
                        didYouMean(*arguments.view, names) + " (" +
                        (names.empty() ? std::string("it has none") : "its views: " + known) + ")");

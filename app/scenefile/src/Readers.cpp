@@ -144,14 +144,7 @@ std::string readChoice(const Node& n, std::string_view what,
 }
 
 std::string joinNames(std::span<const std::string_view> names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size() && i < LISTED_NAMES; ++i) {
-    if (i) out += ", ";
-    out += names[i];
-  }
-  if (names.size() > LISTED_NAMES)
-    out += " and " + std::to_string(names.size() - LISTED_NAMES) + " more";
-  return out;
+  return rt::joinNames(names, ", ", LISTED_NAMES);
 }
 
 }  // namespace rt::scenefile
