@@ -10,8 +10,10 @@ The page shows, from what the repository holds (nothing is rendered here):
     docs/images/galaxy-clear.png);
   - every other image of docs/images/ (a scene's reference image is `rt render NAME
     --width 500`, see scripts/render-docs-images.sh);
-  - the timing across stages: a bar chart (inline SVG) and a table from the JSON that
-    `rt bench --json` writes, read from docs/bench.json (or --bench FILE).
+  - the timing across stages, from the JSON that `rt bench --json` writes, read from
+    docs/bench.json (or --bench FILE): two charts drawn with matplotlib (inline SVG), the
+    reference report's rows on a log scale with the report's times beside ours, and the
+    stages' tracers as rays per second; then a table.
 Whatever is missing (a README, a linked image, the galaxy pair, the timing) is left out of the
 page, said so on it, and listed on stderr as "make-gallery: missing: ...". The exit code is 0
 then too; 2 for bad usage or a timing file that does not follow the schema below.
@@ -20,11 +22,12 @@ The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
    "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh", "threads": N,
              "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
-             "nodesPerRay": Y, "speedup": Z, "seedSeconds": null or a number}]}
+             "nodesPerRay": Y, "speedup": Z, "referenceSeconds": null or a number}]}
+  (the reference report's time for the row; the older name "seedSeconds" is read too).
 
 --root is the repository (default: this script's); the page's links, images and style sheet
 (docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
-python3 comes with scripts/deps.sh python3.
+python3 and matplotlib come with scripts/deps.sh python3 python3-matplotlib.
 """
 from __future__ import annotations
 
@@ -36,6 +39,7 @@ import os
 import re
 import struct
 import sys
+from decimal import ROUND_HALF_UP, Decimal
 from pathlib import Path
 
 PROGRAM = "make-gallery"
@@ -44,17 +48,9 @@ STAGE_FOLDER = re.compile(r"^(stage|mini)(\d+)_[A-Za-z0-9_]+$")
 # A link or an <img> of a stage README (one folder down); a path in running text or in a command
 # (`rt compare NAME.png docs/images/NAME.png`) is not an image of the page.
 IMAGE_LINK = re.compile(r"(?:\]\(|src=\")\.\./docs/images/([A-Za-z0-9_.-]+\.png)")
-GALAXY = [("galaxy.png", "with diffused glass", "the seed's final image"),
+GALAXY = [("galaxy.png", "with diffused glass", "the reference report's final image"),
           ("galaxy-clear.png", "without diffused glass", "one ray per refraction")]
 THUMBNAIL = 240  # the width of an image on the page, in CSS pixels
-
-# The chart's layout, in SVG user units (pixels).
-CHART_WIDTH = 760
-LABEL_WIDTH = 250   # the rows' names, right-aligned at LABEL_WIDTH - 8
-BAR_AREA = 360      # the longest bar
-ROW_HEIGHT = 28
-BAR_HEIGHT = 16
-CHART_TOP = 44      # the title and the legend above the first row
 
 ROW_KEYS = {"name": str, "tracer": str, "accel": str, "threads": int, "seconds": (int, float),
             "primary": int, "secondary": int, "shadow": int, "raysPerSecond": (int, float),
@@ -93,7 +89,7 @@ def first_paragraph(readme: str) -> str:
     for line in readme.splitlines():
         stripped = line.strip()
         if not lines:
-            if not stripped or stripped.startswith(("#", "|", "```", "<!--", "!")):
+            if not stripped or stripped.startswith(("#", "|", "```", "<!--", "!", ">")):
                 continue
         elif not stripped or stripped.startswith(("#", "|", "```")):
             break
@@ -102,7 +98,10 @@ def first_paragraph(readme: str) -> str:
 
 
 def format_seconds(s: float) -> str:
-    """12.3 s, 4 min 05 s, 1 h 21 min (as scripts/common.sh's rt_elapsed, with hours)."""
+    """5.70 ms, 12.3 s, 4 min 05 s, 1 h 21 min (as scripts/common.sh's rt_elapsed, with
+    hours): three significant digits at most."""
+    if s < 0.1:
+        return f"{significant(s * 1000)} ms"
     if s < 60:
         return f"{s:.3g} s"
     if s < 3600:
@@ -140,6 +139,17 @@ def figure(image: Path, page_dir: Path, caption: str) -> str:
 
 # ---- The timing chart --------------------------------------------------------------------------
 
+REFERENCE_KEYS = ("referenceSeconds", "seedSeconds")  # rt bench's name, and its older one
+
+
+def reference_seconds(row: dict) -> float | None:
+    """The reference report's time for the row's render, or None."""
+    for key in REFERENCE_KEYS:
+        if row.get(key) is not None:
+            return row[key]
+    return None
+
+
 def read_bench(path: Path) -> dict:
     """The timing file, checked against the schema. @raises BadInput naming the place."""
     try:
@@ -160,82 +170,159 @@ def read_bench(path: Path) -> dict:
                 raise BadInput(f"{path}: rows[{i}].{key}: expected "
                                f"{'a number' if isinstance(kind, tuple) else kind.__name__}, "
                                f"got {value!r}")
-        seed = row.get("seedSeconds")
-        if seed is not None and (not isinstance(seed, (int, float)) or isinstance(seed, bool)):
-            raise BadInput(f"{path}: rows[{i}].seedSeconds: expected null or a number, "
-                           f"got {seed!r}")
-        for key in ("seconds", "seedSeconds"):
+        for key in REFERENCE_KEYS:
+            value = row.get(key)
+            if value is not None and (not isinstance(value, (int, float)) or
+                                      isinstance(value, bool)):
+                raise BadInput(f"{path}: rows[{i}].{key}: expected null or a number, "
+                               f"got {value!r}")
+        for key in ("seconds", *REFERENCE_KEYS):
             value = row.get(key)
             if value is not None and not (math.isfinite(value) and value >= 0):
                 raise BadInput(f"{path}: rows[{i}].{key}: expected a number >= 0, got {value!r}")
     return bench
 
 
-def bar_width(seconds: float, longest: float) -> float:
-    """A bar's length: BAR_AREA for the longest time, proportional below, to 0.1."""
-    return round(BAR_AREA * seconds / longest, 1) if longest > 0 else 0.0
+def significant(x: float, digits: int = 3) -> str:
+    """x to `digits` significant digits, without an exponent: 1.77, 96.5, 0.265, 46400."""
+    if x == 0 or not math.isfinite(x):
+        return f"{x:g}"
+    exponent = math.floor(math.log10(abs(x)))
+    step = Decimal(1).scaleb(exponent - digits + 1)  # halves round up: 37.25 -> 37.3
+    return f"{Decimal(repr(x)).quantize(step, rounding=ROUND_HALF_UP):f}"
 
 
-def timing_chart(bench: dict) -> str:
-    """The rows as horizontal bars (inline SVG): the time of each (filled) and, where the row
-    has one, the seed's time for the same render (outlined), on one linear scale."""
+def format_rate(x: float) -> str:
+    """Rays per second with three significant digits: 134 k, 12.9 M."""
+    for scale, unit in ((1e9, "G"), (1e6, "M"), (1e3, "k")):
+        if x >= scale:
+            return f"{significant(x / scale)} {unit}"
+    return significant(x)
+
+
+def same_work(row: dict, first: dict) -> bool:
+    """Whether the row traces the rays of the first row: only then is a speed-up like with
+    like (a stage's tracer casts other rays than the beams tracer of the reference rows)."""
+    return all(row[k] == first[k] for k in ("tracer", "primary", "secondary", "shadow"))
+
+
+def matplotlib_pyplot():
+    """matplotlib's pyplot with the SVG backend, made reproducible (no date, fixed ids, text
+    as text so that the labels stay selectable and searchable). @raises BadInput without it."""
+    try:
+        import matplotlib
+    except ImportError as e:
+        raise BadInput("the timing chart needs matplotlib (Debian: python3-matplotlib; "
+                       f"scripts/deps.sh python3-matplotlib installs it) for {sys.executable}"
+                       ) from e
+    matplotlib.use("svg")
+    import matplotlib.pyplot as plt
+    matplotlib.rcParams.update({"svg.fonttype": "none", "svg.hashsalt": "rt-gallery",
+                                "font.size": 11, "font.family": "DejaVu Sans"})
+    return plt
+
+
+def svg_of(plt, fig, label: str) -> str:
+    """The figure as an inline <svg> that scales to the width of its container."""
+    import io
+    buffer = io.StringIO()
+    fig.savefig(buffer, format="svg", bbox_inches="tight", metadata={"Date": None})
+    plt.close(fig)
+    svg = buffer.getvalue()
+    svg = svg[svg.index("<svg"):]
+    svg = re.sub(r'<svg ([^>]*?)width="[^"]*" height="[^"]*"',
+                 rf'<svg class="chart" role="img" aria-label="{html.escape(label)}" \1', svg,
+                 count=1)
+    return svg.strip()
+
+
+def reference_chart(plt, bench: dict, rows: list[dict]) -> str:
+    """The rows that the reference report timed: this repository's time beside the report's,
+    on a log scale (they span five powers of ten)."""
+    ours = [r["seconds"] for r in rows]
+    theirs = [reference_seconds(r) for r in rows]
+    fig, ax = plt.subplots(figsize=(7.2, 0.9 + 0.8 * len(rows)))
+    y = list(range(len(rows)))
+    h = 0.38
+    ax.barh([v - h / 2 for v in y], ours, height=h, color="#3b6ea8",
+            label=f"this repository, {bench['width']}\u00d7{bench['height']}")
+    ax.barh([v + h / 2 for v in y], theirs, height=h, color="#d98c3f",
+            label="the reference report (Java), 1280\u00d7720")
+    for v, s in zip(y, ours):
+        ax.text(s * 1.15, v - h / 2, format_seconds(s), va="center", fontsize=10)
+    for v, s in zip(y, theirs):
+        ax.text(s * 1.15, v + h / 2, format_seconds(s), va="center", fontsize=10)
+    ax.set_xscale("log")
+    low = min(ours + theirs)
+    high = max(ours + theirs)
+    ax.set_xlim(low / 3, high * 20)
+    ax.set_yticks(y, [r["name"] for r in rows])
+    ax.invert_yaxis()
+    ax.set_xlabel("wall time per render, seconds (log scale)")
+    ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=1, frameon=False)
+    for side in ("top", "right"):
+        ax.spines[side].set_visible(False)
+    return svg_of(plt, fig, "wall time of the reference report's rows, this repository beside "
+                            "the reference report")
+
+
+def rate_chart(plt, bench: dict, rows: list[dict]) -> str:
+    """The stages' tracers as rays per second: each casts other rays, so rays per second is
+    what compares them."""
+    rates = [r["raysPerSecond"] for r in rows]
+    fig, ax = plt.subplots(figsize=(7.2, 0.7 + 0.45 * len(rows)))
+    y = list(range(len(rows)))
+    ax.barh(y, [x / 1e6 for x in rates], height=0.6, color="#3b6ea8")
+    for v, x in zip(y, rates):
+        ax.text(x / 1e6 * 1.02, v, f"{format_rate(x)} rays/s", va="center", fontsize=10)
+    ax.set_xlim(0, max(rates) / 1e6 * 1.35 if rates else 1)
+    ax.set_yticks(y, [f'{r["name"]} ({r["tracer"]})' for r in rows])
+    ax.invert_yaxis()
+    ax.set_xlabel("million rays per second (every ray: primary, secondary, shadow)")
+    for side in ("top", "right"):
+        ax.spines[side].set_visible(False)
+    return svg_of(plt, fig, "rays per second of each stage's tracer")
+
+
+def timing_charts(bench: dict) -> list[str]:
+    """The charts of the timing: the reference report's rows, then the other rows."""
+    plt = matplotlib_pyplot()
     rows = bench["rows"]
-    longest = max([r["seconds"] for r in rows] +
-                  [r["seedSeconds"] for r in rows if r.get("seedSeconds") is not None] + [0])
-    height = CHART_TOP + ROW_HEIGHT * len(rows) + 8
-    title = f'{bench["scene"]}, {bench["width"]}\u00d7{bench["height"]}'
-    parts = [f'<svg class="chart" xmlns="http://www.w3.org/2000/svg" width="{CHART_WIDTH}" '
-             f'height="{height}" viewBox="0 0 {CHART_WIDTH} {height}" role="img" '
-             f'aria-label="render time by stage: {html.escape(title)}">',
-             f'<text class="title" x="0" y="16">{html.escape(title)}: wall time per render</text>',
-             '<rect class="bar" x="0" y="26" width="12" height="10"/>'
-             '<text x="16" y="35">this repository</text>']
-    if any(r.get("seedSeconds") is not None for r in rows):
-        parts.append('<rect class="seed" x="140" y="26" width="12" height="10"/>'
-                     '<text x="156" y="35">the seed (the course\'s Java project)</text>')
-    for i, r in enumerate(rows):
-        y = CHART_TOP + i * ROW_HEIGHT
-        bar_y = y + (ROW_HEIGHT - BAR_HEIGHT) / 2
-        text_y = y + ROW_HEIGHT / 2 + 5
-        details = (f'{r["name"]}: tracer {r["tracer"]}, acceleration {r["accel"]}, '
-                   f'{r["threads"]} thread{"s" if r["threads"] != 1 else ""}; '
-                   f'{format_seconds(r["seconds"])}, {format_number(r["raysPerSecond"])} rays/s, '
-                   f'{format_number(r["nodesPerRay"])} nodes/ray, speed-up {r["speedup"]:g}\u00d7')
-        if r.get("seedSeconds") is not None:
-            details += f'; the seed: {format_seconds(r["seedSeconds"])}'
-        w = bar_width(r["seconds"], longest)
-        value = f'{format_seconds(r["seconds"])} ({r["speedup"]:g}\u00d7)'
-        parts.append(f'<g class="row"><title>{html.escape(details)}</title>')
-        parts.append(f'<text class="label" x="{LABEL_WIDTH - 8}" y="{text_y:g}" '
-                     f'text-anchor="end">{html.escape(r["name"])}</text>')
-        end = w
-        if r.get("seedSeconds") is not None:
-            seed_w = bar_width(r["seedSeconds"], longest)
-            end = max(w, seed_w)
-            value += f'; the seed: {format_seconds(r["seedSeconds"])}'
-            parts.append(f'<rect class="seed" x="{LABEL_WIDTH}" y="{bar_y:g}" '
-                         f'width="{seed_w:g}" height="{BAR_HEIGHT}"/>')
-        parts.append(f'<rect class="bar" x="{LABEL_WIDTH}" y="{bar_y:g}" width="{w:g}" '
-                     f'height="{BAR_HEIGHT}"/>')
-        parts.append(f'<text class="value" x="{LABEL_WIDTH + end + 6:g}" y="{text_y:g}">'
-                     f'{html.escape(value)}</text></g>')
-    parts.append("</svg>")
-    return "\n".join(parts)
+    timed = [r for r in rows if reference_seconds(r) is not None]
+    others = [r for r in rows if reference_seconds(r) is None]
+    out = []
+    if timed:
+        out.append(f"<p>The reference report's rows: {bench['scene']} at "
+                   f"{bench['width']}\u00d7{bench['height']} here, at 1280\u00d7720 (a "
+                   f"{significant(1280 * 720 / (bench['width'] * bench['height']))} times "
+                   "larger image) in the report, in Java on its own machine.</p>")
+        out.append('<figure class="chart">' + reference_chart(plt, bench, timed) + "</figure>")
+    if others:
+        out.append(f"<p>Each stage's tracer on the same scene: they cast different rays, so "
+                   f"rays per second compares them.</p>")
+        out.append('<figure class="chart">' + rate_chart(plt, bench, others) + "</figure>")
+    return out
 
 
 def timing_table(bench: dict) -> str:
     head = ("name", "tracer", "acceleration", "threads", "time", "primary rays",
-            "secondary rays", "shadow rays", "rays/s", "nodes/ray", "speed-up", "the seed")
-    out = ["<table><thead><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr></thead><tbody>"]
+            "secondary rays", "shadow rays", "rays/s", "nodes/ray", "speed-up",
+            "the reference report")
+    first = bench["rows"][0] if bench["rows"] else None
+    out = ['<div class="table"><table><thead><tr>' +
+           "".join(f"<th>{h}</th>" for h in head) + "</tr></thead><tbody>"]
     for r in bench["rows"]:
-        seed = r.get("seedSeconds")
+        reference = reference_seconds(r)
+        speedup = f'{significant(r["speedup"])}\u00d7' if same_work(r, first) else "—"
         cells = (html.escape(r["name"]), html.escape(r["tracer"]), html.escape(r["accel"]),
                  str(r["threads"]), format_seconds(r["seconds"]), format_number(r["primary"]),
                  format_number(r["secondary"]), format_number(r["shadow"]),
-                 format_number(r["raysPerSecond"]), format_number(r["nodesPerRay"]),
-                 f'{r["speedup"]:g}\u00d7', format_seconds(seed) if seed is not None else "—")
+                 format_rate(r["raysPerSecond"]), significant(r["nodesPerRay"]), speedup,
+                 format_seconds(reference) if reference is not None else "—")
         out.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
-    out.append("</tbody></table>")
+    out.append("</tbody></table></div>")
+    out.append("<p>The speed-up is the first row's time over the row's, shown where the row "
+               "traces the same rays as the first (—: other work).</p>")
     return "\n".join(out)
 
 
@@ -312,7 +399,7 @@ def page(root: Path, bench_path: Path, page_dir: Path) -> str:
 
     body.append('<h2 id="timing">Timing across stages</h2>')
     if bench:
-        body.append(timing_chart(bench))
+        body += timing_charts(bench)
         body.append(timing_table(bench))
     else:
         where = os.path.relpath(bench_path, root) if bench_path.is_relative_to(root) \

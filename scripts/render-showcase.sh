@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Renders the course's culmination, the seed's galaxy in a glass box, into images/NAME.png.
+# Renders the course's culmination, the reference report's galaxy in a glass box, into
+# images/NAME.png.
 #
 #   scripts/render-showcase.sh [SCENE] [RT_RENDER_OPTION]...
 #

@@ -3,11 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <optional>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
-#include <variant>
 
 #include "geometries/Cylinder.h"
 #include "geometries/Plane.h"
@@ -15,208 +11,6 @@
 #include "geometries/Sphere.h"
 
 namespace rt {
-
-// ---------------------------------------------------------------------------------------------
-// The knobs
-
-namespace {
-
-constexpr std::array<DemoKnobInfo, 7> KNOBS{{
-    {"samples", "N x N jittered samples per pixel", 1, JitteredSampler::MAX_GRID, true},
-    {"lensSamples", "rays through the lens per sample", 1, JitteredSampler::MAX_LENS_SAMPLES, true},
-    {"aperture", "the lens radius (0: the pinhole)", 0, 1000, false},
-    {"adaptive", "adaptive super-sampling instead of the jittered grid", 0, 1, true},
-    {"shadowSamples", "shadow rays per light with a radius", 1, PointLight::MAX_SHADOW_SAMPLES,
-     true},
-    {"glossyGrid", "N of every reflected beam (1: a sharp mirror)", 1, BeamSettings::MAX_GRID,
-     true},
-    {"frostedGrid", "N of every refracted beam (1: clear glass)", 1, BeamSettings::MAX_GRID, true},
-}};
-
-/// The lights with a size (point and spot lights of radius > 0).
-template <typename Visit>
-void forEachAreaLight(auto& lights, Visit&& visit) {
-  for (auto& light : lights) {
-    std::visit(
-        [&](auto& l) {
-          if constexpr (std::is_base_of_v<PointLight, std::remove_cvref_t<decltype(l)>>) {
-            if (l.radius > 0) visit(l);
-          }
-        },
-        light);
-  }
-}
-
-/// The beams with a radius of one kind (reflected or refracted) in the appearance table.
-template <typename Visit>
-void forEachBeam(auto& appearances, bool reflected, Visit&& visit) {
-  for (auto& a : appearances) {
-    auto& beam = reflected ? a.material.reflectedBeam : a.material.refractedBeam;
-    if (beam.radius > 0) visit(beam);
-  }
-}
-
-}  // namespace
-
-const DemoKnobInfo& knobInfo(DemoKnob knob) { return KNOBS.at(static_cast<std::size_t>(knob)); }
-
-bool knobApplies(const DemoSetup& setup, DemoKnob knob) {
-  bool found = false;
-  switch (knob) {
-    case DemoKnob::ShadowSamples:
-      forEachAreaLight(setup.scene.lights, [&](const PointLight&) { found = true; });
-      return found;
-    case DemoKnob::GlossyGrid:
-    case DemoKnob::FrostedGrid:
-      forEachBeam(setup.scene.appearances, knob == DemoKnob::GlossyGrid,
-                  [&](const BeamSettings&) { found = true; });
-      return found;
-    default:
-      return true;
-  }
-}
-
-double knobValue(const DemoSetup& setup, DemoKnob knob) {
-  const SamplingSettings& s = setup.sampling;
-  std::optional<int> first;
-  switch (knob) {
-    case DemoKnob::Samples:
-      return s.samples;
-    case DemoKnob::LensSamples:
-      return s.lensSamples;
-    case DemoKnob::Aperture:
-      return setup.camera.aperture;
-    case DemoKnob::Adaptive:
-      return s.adaptive ? 1 : 0;
-    case DemoKnob::ShadowSamples:
-      forEachAreaLight(setup.scene.lights, [&](const PointLight& l) {
-        if (!first) first = l.shadowSamples;
-      });
-      return first.value_or(1);
-    case DemoKnob::GlossyGrid:
-    case DemoKnob::FrostedGrid:
-      forEachBeam(setup.scene.appearances, knob == DemoKnob::GlossyGrid,
-                  [&](const BeamSettings& b) {
-                    if (!first) first = b.grid;
-                  });
-      return first.value_or(1);
-  }
-  return 0;  // not reached: every knob is a case above
-}
-
-void setKnob(DemoSetup& setup, DemoKnob knob, double value) {
-  const DemoKnobInfo& info = knobInfo(knob);
-  if (!(value >= info.min && value <= info.max) || (info.integer && value != std::floor(value))) {
-    throw std::invalid_argument(std::string(info.name) + ": expected " +
-                                (info.integer ? "an integer" : "a number") + " from " +
-                                formatNumber(info.min) + " to " + formatNumber(info.max) +
-                                ", got " + formatNumber(value));
-  }
-  SamplingSettings& s = setup.sampling;
-  const int n = static_cast<int>(value);
-  switch (knob) {
-    case DemoKnob::Samples:
-      s.samples = n;
-      break;
-    case DemoKnob::LensSamples:
-      s.lensSamples = n;
-      break;
-    case DemoKnob::Aperture:
-      setup.camera.aperture = value;
-      break;
-    case DemoKnob::Adaptive:
-      s.adaptive = n == 1;
-      break;
-    case DemoKnob::ShadowSamples:
-      forEachAreaLight(setup.scene.lights, [&](PointLight& l) { l.shadowSamples = n; });
-      break;
-    case DemoKnob::GlossyGrid:
-    case DemoKnob::FrostedGrid:
-      forEachBeam(setup.scene.appearances, knob == DemoKnob::GlossyGrid,
-                  [&](BeamSettings& b) { b.grid = n; });
-      break;
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The table
-
-DemoSetup DemoScene::build() const {
-  SceneSetup<LitScene> s = course.make();
-  return {std::move(s.scene), s.camera, sampling};
-}
-
-std::span<const DemoScene> demoScenes() {
-  using K = DemoKnob;
-  static const std::vector<DemoScene> table{
-      {{"glossy-spheres",
-        "Four mirror spheres whose reflected beams widen from left to right: sharp to glossy",
-        &demo::glossySpheres},
-       {},
-       {K::GlossyGrid, K::Samples}},
-      {{"frosted-glass",
-        "Clear glass and two panes of diffused glass, of growing radius, in front of a pattern",
-        &demo::frostedGlass},
-       {},
-       {K::FrostedGrid, K::Samples}},
-      {{"soft-shadows",
-        "Shapes under a light of radius 1.2: penumbrae widening away from what casts them",
-        &demo::softShadows},
-       {},
-       {K::ShadowSamples, K::Samples}},
-      {{"antialiasing",
-        "A checkerboard to the horizon, 4 x 4 jittered samples per pixel (samples=1: aliased)",
-        &demo::antialiasing},
-       {.samples = 4},
-       {K::Samples}},
-      {{"depth-of-field", "Spheres at seven depths seen through a lens focused on the middle one",
-        &demo::depthOfField},
-       {.lensSamples = 24},
-       {K::LensSamples, K::Aperture, K::Samples}},
-      {{"adaptive",
-        "Flat shapes with sharp edges, adaptively super-sampled: extra rays only on the edges",
-        &demo::adaptiveEdges},
-       {.adaptive = true, .adaptiveDepth = 3},
-       {K::Adaptive, K::Samples}},
-      {{"super-sampling",
-        "Every technique of mini project 1 in one scene, each off until a --param turns it on",
-        &demo::superSampling},
-       {},
-       {K::GlossyGrid, K::FrostedGrid, K::ShadowSamples, K::Samples, K::LensSamples, K::Aperture,
-        K::Adaptive}},
-  };
-  return table;
-}
-
-void checkDemoTable(std::span<const DemoScene> table) {
-  std::vector<CourseScene> course;
-  course.reserve(table.size());
-  for (const DemoScene& entry : table) course.push_back(entry.course);
-  checkSceneTable(course);  // so every entry has a name from here on
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const DemoScene& entry = table[i];
-    const auto refuse = [&](const std::string& what) {
-      throw std::logic_error("checkDemoTable: entry " + std::to_string(i) + " ('" +
-                             entry.course.name + "'): " + what);
-    };
-    try {
-      (void)makePixelSampler(entry.sampling);
-    } catch (const std::exception& e) {
-      refuse(std::string("its sampling settings are refused: ") + e.what());
-    }
-    const DemoSetup setup = entry.build();
-    for (std::size_t k = 0; k < entry.knobs.size(); ++k) {
-      const std::string name = knobInfo(entry.knobs[k]).name;
-      for (std::size_t j = 0; j < k; ++j)
-        if (entry.knobs[j] == entry.knobs[k]) refuse("the knob " + name + " is listed twice");
-      if (!knobApplies(setup, entry.knobs[k]))
-        refuse("the knob " + name + " has nothing to act on in its scene");
-    }
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// The scenes
 
 namespace demo {
 
@@ -273,7 +67,7 @@ CameraSpec view(const Point& from, const Point& at, double width, double distanc
 
 }  // namespace
 
-SceneSetup<LitScene> glossySpheres() {
+SceneSetup<LitScene> glossySpheres(const GlossySpheresParams& params) {
   LitScene s = darkRoom("glossy spheres");
   addFloorBoard(s, -12, -20, 24, 32);
   // Behind the camera, seen only in the mirrors: a wall of coloured stripes.
@@ -287,14 +81,14 @@ SceneSetup<LitScene> glossySpheres() {
   const std::array<double, 4> radii{0, 0.03, 0.08, 0.2};
   for (std::size_t i = 0; i < radii.size(); ++i) {
     Material m = Material::course(0.1, 0.6, 100, 0, 0.8);
-    m.reflectedBeam = {1, radii[i], 8};
+    m.reflectedBeam = {1, radii[i], params.beamGrid};
     s.add(Sphere(Point(-3.3 + 2.2 * static_cast<double>(i), 1, 0), 1), Color(8, 8, 10), m);
   }
   s.addLight(PointLight(Color(210, 200, 190), Point(3, 9, 7)));
   return {s, view(Point(0, 2.4, 9), Point(0, 0.9, 0), 10.5, 9, 640, 320)};
 }
 
-SceneSetup<LitScene> frostedGlass() {
+SceneSetup<LitScene> frostedGlass(const FrostedGlassParams& params) {
   LitScene s = darkRoom("frosted glass");
   s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(15, 15, 15), Material::course(0.6, 0.1, 20));
   // The pattern: a wall of small coloured tiles at z = -3.
@@ -324,7 +118,7 @@ SceneSetup<LitScene> frostedGlass() {
   };
   for (std::size_t i = 0; i < radii.size(); ++i) {
     Material glass = Material::course(0.05, 0.4, 60, 0.85, 0.05);
-    glass.refractedBeam = {1, radii[i], 8};
+    glass.refractedBeam = {1, radii[i], params.beamGrid};
     const double x = -2.4 + 2.4 * static_cast<double>(i), w = 0.06;
     s.add(Polygon{Point(x - 1, 0.15, 0), Point(x + 1, 0.15, 0), Point(x + 1, 2.75, 0),
                   Point(x - 1, 2.75, 0)},
@@ -338,7 +132,7 @@ SceneSetup<LitScene> frostedGlass() {
   return {s, view(Point(0, 1.6, 8), Point(0, 1.3, 0), 8.4, 8, 640, 320)};
 }
 
-SceneSetup<LitScene> softShadows() {
+SceneSetup<LitScene> softShadows(const SoftShadowsParams& params) {
   LitScene s = darkRoom("soft shadows");
   s.add(Plane(Point(0, 0, 0), Vector(0, 1, 0)), Color(20, 20, 20), Material::course(0.8, 0.05, 10));
   const Material paint = Material::course(0.6, 0.4, 60);
@@ -346,8 +140,9 @@ SceneSetup<LitScene> softShadows() {
   s.add(Sphere(Point(0.2, 2.1, -0.2), 0.6), Color(5, 25, 45), paint);  // floating
   s.add(Cylinder(0.22, Ray(Point(1.9, 0, -1.2), Vector(0, 1, 0)), 3.2), Color(10, 30, 10),
         paint);  // a post
-  s.addLight(
-      PointLight(Color(230, 220, 200), Point(-0.5, 6, 2)).setRadius(1.2).setShadowSamples(32));
+  s.addLight(PointLight(Color(230, 220, 200), Point(-0.5, 6, 2))
+                 .setRadius(1.2)
+                 .setShadowSamples(params.shadowSamples));
   return {s, view(Point(0, 4.4, 8.5), Point(0.3, 0.7, -0.8), 10, 10, 600, 400)};
 }
 
@@ -371,7 +166,7 @@ SceneSetup<LitScene> antialiasing() {
   return {s, view(from, at, 6, 6, 400, 300)};
 }
 
-SceneSetup<LitScene> depthOfField() {
+SceneSetup<LitScene> depthOfField(const DepthOfFieldParams& params) {
   LitScene s = darkRoom("depth of field");
   addFloorBoard(s, -12, -40, 24, 48);
   const std::array<Color, 7> colours{Color(220, 50, 40), Color(230, 130, 30), Color(220, 200, 40),
@@ -389,7 +184,7 @@ SceneSetup<LitScene> depthOfField() {
   const Double3 to = (target - c.location).xyz();
   c.focalDistance =
       (Point(0.3, 0.5, -7) - c.location).xyz().dot(to) / std::sqrt(to.lengthSquared());
-  c.aperture = 0.2;
+  c.aperture = params.aperture;
   return {s, c};
 }
 
@@ -412,24 +207,27 @@ SceneSetup<LitScene> adaptiveEdges() {
   return {s, CameraSpec::squareView(Point(0, 0, 10), Point(0, 0, 0), 6.6, 10, 300)};
 }
 
-SceneSetup<LitScene> superSampling() {
+SceneSetup<LitScene> superSampling(const SuperSamplingParams& params) {
   LitScene s = darkRoom("super-sampling");
   addFloorBoard(s, -6, -14, 12, 20);
-  // A glossy sphere (its beam off until glossyGrid > 1), two coloured spheres further back.
+  // A glossy sphere (its beam off while glossyGrid is 1), two coloured spheres further back.
   Material glossy = Material::course(0.1, 0.6, 100, 0, 0.8);
-  glossy.reflectedBeam = {1, 0.08, 1};
+  glossy.reflectedBeam = {1, 0.08, params.glossyGrid};
   s.add(Sphere(Point(-1.3, 1, 0), 1), Color(8, 8, 10), glossy);
   s.add(Sphere(Point(1.2, 0.6, -4.5), 0.6), Color(150, 40, 30), Material::course(0.4, 0.5, 60));
   s.add(Sphere(Point(-0.4, 0.6, -9), 0.6), Color(30, 80, 150), Material::course(0.4, 0.5, 60));
-  // A pane of glass in front of the right half of the red sphere (clear until frostedGrid > 1).
+  // A pane of glass in front of the right half of the red sphere (clear while frostedGrid is 1).
   Material glass = Material::course(0.05, 0.4, 60, 0.85, 0.05);
-  glass.refractedBeam = {1, 0.08, 1};
+  glass.refractedBeam = {1, 0.08, params.frostedGrid};
   s.add(Polygon{Point(1, 0.1, -2.5), Point(3, 0.1, -2.5), Point(3, 2.3, -2.5), Point(1, 2.3, -2.5)},
         Color(4, 6, 8), glass);
-  // A light of radius 1 (a point until shadowSamples > 1).
-  s.addLight(PointLight(Color(230, 220, 200), Point(-2, 7, 4)).setRadius(1));
+  // A light of radius 1 (one shadow ray while shadowSamples is 1).
+  s.addLight(PointLight(Color(230, 220, 200), Point(-2, 7, 4))
+                 .setRadius(1)
+                 .setShadowSamples(params.shadowSamples));
   CameraSpec c = view(Point(0, 2.2, 7), Point(0, 0.8, -2), 7.2, 8, 400, 300);
   // In focus: the glossy sphere's centre (when aperture > 0).
+  c.aperture = params.aperture;
   const Double3 to = (Point(0, 0.8, -2) - c.location).xyz();
   c.focalDistance = (Point(-1.3, 1, 0) - c.location).xyz().dot(to) / std::sqrt(to.lengthSquared());
   return {s, c};

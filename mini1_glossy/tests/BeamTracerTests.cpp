@@ -25,7 +25,7 @@ Image render(const SceneSetup<LitScene>& s, const RayTracer& tracer, int n, RayC
   spec.nX = spec.nY = n;
   const Camera camera = spec.builder().build();
   Image image(n, n);
-  const RayCounts c = renderBlock(camera, tracer, CenterSampler(5), {0, 0, n, n}, image);
+  const RayCounts c = renderBlock({camera, tracer, CenterSampler(5)}, {0, 0, n, n}, image);
   if (counts) *counts = c;
   return image;
 }
@@ -181,7 +181,7 @@ TEST(BeamTracerTests, allocatesNothing) {
   Image image(24, 24);
   RayCounts counts;
   EXPECT_EQ(0, testing::allocationsDuring([&] {
-              counts = renderBlock(camera, tracer, CenterSampler(), {0, 0, 24, 24}, image);
+              counts = renderBlock({camera, tracer, CenterSampler()}, {0, 0, 24, 24}, image);
             }));
   EXPECT_GT(counts.secondary, 24u * 24u);
   EXPECT_GT(counts.shadow, 24u * 24u);

@@ -1,5 +1,5 @@
-// Mini project 1: the demonstration scenes. The table holds together (checkDemoTable), the knobs
-// change what they name and refuse what they cannot take, and each scene shows its technique: its
+// Mini project 1: the demonstration scenes. The table holds together (checkDemoTable), the scenes'
+// parameters change what they name, and each scene shows its technique: its
 // rays are counted exactly where a count is exact (a beam of N = 8 is 52 rays, 32 shadow rays per
 // shaded point), and the pixels that depend on random numbers are exactly those of the technique.
 #include <gmock/gmock.h>
@@ -17,6 +17,7 @@
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/DemoScenes.h"
+#include "glossy/DemoTable.h"
 #include "glossy/RayBeam.h"
 
 namespace rt {
@@ -34,6 +35,11 @@ const DemoScene& demoEntry(std::string_view name) {
 }
 
 DemoSetup built(std::string_view name) { return demoEntry(name).build(); }
+
+/// A scene made with other parameters, sampled with the settings given.
+DemoSetup setupOf(SceneSetup<LitScene> s, const SamplingSettings& sampling) {
+  return {std::move(s.scene), s.camera, sampling};
+}
 
 /// The setup's camera at nX x nY pixels.
 Camera cameraOf(const DemoSetup& d, int nX, int nY) {
@@ -55,7 +61,7 @@ Rendered render(const DemoSetup& d, int nX, int nY, std::uint64_t seed = 0) {
   SamplingSettings sampling = d.sampling;
   sampling.seed = seed;
   Rendered r{Image(nX, nY), {}};
-  r.counts = renderBlock(camera, tracer, *makePixelSampler(sampling), {0, 0, nX, nY}, r.image);
+  r.counts = renderBlock({camera, tracer, *makePixelSampler(sampling)}, {0, 0, nX, nY}, r.image);
   return r;
 }
 
@@ -118,109 +124,59 @@ TEST(DemoScenesTests, theTable) {
   EXPECT_NO_THROW(checkDemoTable(demoScenes()));
   for (const DemoScene& e : demoScenes())
     EXPECT_NO_THROW(BeamTracer{e.build().scene}) << e.course.name;
-  // TC03: the knobs and their values as rt list shows them
-  const auto knobs = [](std::string_view name) {
-    std::vector<std::pair<std::string, double>> out;
-    const DemoScene& e = demoEntry(name);
-    const DemoSetup d = e.build();
-    for (const DemoKnob k : e.knobs) out.emplace_back(knobInfo(k).name, knobValue(d, k));
-    return out;
-  };
-  using Knobs = std::vector<std::pair<std::string, double>>;
-  EXPECT_EQ((Knobs{{"glossyGrid", 8}, {"samples", 1}}), knobs("glossy-spheres"));
-  EXPECT_EQ((Knobs{{"frostedGrid", 8}, {"samples", 1}}), knobs("frosted-glass"));
-  EXPECT_EQ((Knobs{{"shadowSamples", 32}, {"samples", 1}}), knobs("soft-shadows"));
-  EXPECT_EQ((Knobs{{"samples", 4}}), knobs("antialiasing"));
-  EXPECT_EQ((Knobs{{"lensSamples", 24}, {"aperture", 0.2}, {"samples", 1}}),
-            knobs("depth-of-field"));
-  EXPECT_EQ((Knobs{{"adaptive", 1}, {"samples", 1}}), knobs("adaptive"));
-  EXPECT_EQ((Knobs{{"glossyGrid", 1},
-                   {"frostedGrid", 1},
-                   {"shadowSamples", 1},
-                   {"samples", 1},
-                   {"lensSamples", 1},
-                   {"aperture", 0},
-                   {"adaptive", 0}}),
-            knobs("super-sampling"));
-  // TC04: the samplers the settings make: 4 x 4 jittered samples; 24 lens samples; the adaptive
+  // TC03: the samplers the settings make: 4 x 4 jittered samples; 24 lens samples; the adaptive
   // lattice of depth 3, (2^3 + 1)^2 = 81 points at most
   EXPECT_EQ(16, makePixelSampler(built("antialiasing").sampling)->samplesPerPixel());
   EXPECT_EQ(24, makePixelSampler(built("depth-of-field").sampling)->samplesPerPixel());
   EXPECT_EQ(81, makePixelSampler(built("adaptive").sampling)->samplesPerPixel());
 }
 
-TEST(DemoScenesTests, knobs) {
+TEST(DemoScenesTests, parameters) {
   // ============ Equivalence Partitions Tests ==============
-  // TC01: each knob sets what it names, and reads back
-  DemoSetup d = built("super-sampling");
-  d.scene.addLight(PointLight(Color(10, 10, 10), Point(0, 9, 0)));  // a point: radius 0
-  const std::vector<std::pair<DemoKnob, double>> values{
-      {DemoKnob::Samples, 3},    {DemoKnob::LensSamples, 5},   {DemoKnob::Aperture, 0.25},
-      {DemoKnob::Adaptive, 1},   {DemoKnob::ShadowSamples, 9}, {DemoKnob::GlossyGrid, 6},
-      {DemoKnob::FrostedGrid, 7}};
-  for (const auto& [knob, value] : values) {
-    setKnob(d, knob, value);
-    EXPECT_EQ(value, knobValue(d, knob)) << knobInfo(knob).name;
-  }
-  EXPECT_EQ(3, d.sampling.samples);
-  EXPECT_EQ(5, d.sampling.lensSamples);
-  EXPECT_EQ(0.25, d.camera.aperture);
-  EXPECT_TRUE(d.sampling.adaptive);
-  EXPECT_EQ(9, std::get<PointLight>(d.scene.lights[0]).shadowSamples);
-  // TC02: a light without a radius keeps its one shadow ray; a material without a beam radius
-  // keeps its grid
-  EXPECT_EQ(1, std::get<PointLight>(d.scene.lights[1]).shadowSamples);
+  // TC01: the defaults are the table's scenes: N = 8 beams, 32 shadow rays, a lens of radius
+  // 0.2, and every technique of super-sampling off
+  EXPECT_EQ(8, demo::GlossySpheresParams{}.beamGrid);
+  EXPECT_EQ(8, demo::FrostedGlassParams{}.beamGrid);
+  EXPECT_EQ(32, demo::SoftShadowsParams{}.shadowSamples);
+  EXPECT_EQ(0.2, demo::DepthOfFieldParams{}.aperture);
+  const demo::SuperSamplingParams off;
+  EXPECT_EQ(1, off.glossyGrid);
+  EXPECT_EQ(1, off.frostedGrid);
+  EXPECT_EQ(1, off.shadowSamples);
+  EXPECT_EQ(0, off.aperture);
+  // TC02: each of super-sampling's parameters sets what it names: the glossy sphere's beam, the
+  // pane's beam, the light's shadow rays, the lens
+  const SceneSetup<LitScene> on = demo::superSampling(
+      {.glossyGrid = 6, .frostedGrid = 7, .shadowSamples = 9, .aperture = 0.25});
+  EXPECT_EQ(9, std::get<PointLight>(on.scene.lights[0]).shadowSamples);
+  EXPECT_EQ(0.25, on.camera.aperture);
   int glossy = 0, frosted = 0;
-  for (const Appearance& a : d.scene.appearances) {
-    glossy += a.material.reflectedBeam.grid == 6 ? 1 : 0;
-    frosted += a.material.refractedBeam.grid == 7 ? 1 : 0;
-    if (a.material.reflectedBeam.radius == 0) {
-      EXPECT_EQ(1, a.material.reflectedBeam.grid);
-    }
+  for (const Appearance& a : on.scene.appearances) {
+    glossy += a.material.reflectedBeam == BeamSettings{1, 0.08, 6} ? 1 : 0;
+    frosted += a.material.refractedBeam == BeamSettings{1, 0.08, 7} ? 1 : 0;
   }
   EXPECT_EQ(1, glossy);
   EXPECT_EQ(1, frosted);
-  // TC03: adaptive off again
-  setKnob(d, DemoKnob::Adaptive, 0);
-  EXPECT_FALSE(d.sampling.adaptive);
-  // TC04: what a knob acts on: the sampling and the lens always; the lights and beams only when
-  // the scene has some with a radius (the checkerboard has neither), whose value then reads 1
-  const DemoSetup plain = built("antialiasing");
-  EXPECT_TRUE(knobApplies(plain, DemoKnob::Samples));
-  EXPECT_TRUE(knobApplies(plain, DemoKnob::Aperture));
-  EXPECT_FALSE(knobApplies(plain, DemoKnob::ShadowSamples));
-  EXPECT_FALSE(knobApplies(plain, DemoKnob::GlossyGrid));
-  EXPECT_FALSE(knobApplies(plain, DemoKnob::FrostedGrid));
-  EXPECT_EQ(1, knobValue(plain, DemoKnob::ShadowSamples));
-  EXPECT_TRUE(knobApplies(built("glossy-spheres"), DemoKnob::GlossyGrid));
-  EXPECT_FALSE(knobApplies(built("glossy-spheres"), DemoKnob::FrostedGrid));
+  // TC03: the other scenes' parameters likewise
+  for (const Appearance& a : demo::glossySpheres({.beamGrid = 3}).scene.appearances)
+    if (a.material.reflectedBeam.radius > 0) {
+      EXPECT_EQ(3, a.material.reflectedBeam.grid);
+    }
+  for (const Appearance& a : demo::frostedGlass({.beamGrid = 5}).scene.appearances)
+    if (a.material.refractedBeam.radius > 0) {
+      EXPECT_EQ(5, a.material.refractedBeam.grid);
+    }
+  EXPECT_EQ(
+      4,
+      std::get<PointLight>(demo::softShadows({.shadowSamples = 4}).scene.lights[0]).shadowSamples);
+  EXPECT_EQ(0.05, demo::depthOfField({.aperture = 0.05}).camera.aperture);
 
   // =============== Boundary Values Tests ==================
-  const auto set = [&](DemoKnob knob, double value) {
-    return [&d, knob, value] { setKnob(d, knob, value); };
-  };
-  const auto refused = [](const char* message) {
-    return ThrowsMessage<std::invalid_argument>(StrEq(message));
-  };
-  // TC11: the ends of the ranges are accepted
-  EXPECT_NO_THROW(set(DemoKnob::Samples, 1)());
-  EXPECT_NO_THROW(set(DemoKnob::Samples, 64)());
-  EXPECT_NO_THROW(set(DemoKnob::Aperture, 0)());
-  EXPECT_NO_THROW(set(DemoKnob::ShadowSamples, 4096)());
-  // TC12: just outside, or not whole: the knob, its range and the value
-  EXPECT_THAT(set(DemoKnob::Samples, 0),
-              refused("samples: expected an integer from 1 to 64, got 0"));
-  EXPECT_THAT(set(DemoKnob::Samples, 65),
-              refused("samples: expected an integer from 1 to 64, got 65"));
-  EXPECT_THAT(set(DemoKnob::Samples, 2.5),
-              refused("samples: expected an integer from 1 to 64, got 2.5"));
-  EXPECT_THAT(set(DemoKnob::Aperture, -0.5),
-              refused("aperture: expected a number from 0 to 1000, got -0.5"));
-  EXPECT_THAT(set(DemoKnob::Adaptive, 2),
-              refused("adaptive: expected an integer from 0 to 1, got 2"));
-  EXPECT_THAT(set(DemoKnob::GlossyGrid, std::nan("")),
-              refused("glossyGrid: expected an integer from 1 to 64, got nan"));
-  EXPECT_EQ(64, d.sampling.samples);  // a refused value changes nothing
+  // TC11: a beam grid or a shadow-ray count the engine refuses is refused when the scene is made
+  EXPECT_NO_THROW(demo::glossySpheres({.beamGrid = BeamSettings::MAX_GRID}));
+  EXPECT_THROW(demo::glossySpheres({.beamGrid = BeamSettings::MAX_GRID + 1}),
+               std::invalid_argument);
+  EXPECT_THROW(demo::softShadows({.shadowSamples = 0}), std::invalid_argument);
 }
 
 TEST(DemoScenesTests, checkDemoTable) {
@@ -234,26 +190,18 @@ TEST(DemoScenesTests, checkDemoTable) {
   const CourseScene course = demoEntry("soft-shadows").course;
   // ============ Equivalence Partitions Tests ==============
   // TC01: a valid entry
-  EXPECT_NO_THROW(check({{course, {}, {DemoKnob::ShadowSamples}}})());
+  EXPECT_NO_THROW(check({{course, {}}})());
   // TC02: what checkSceneTable finds (here a name that is not kebab-case) is its message
   CourseScene badName = course;
   badName.name = "Soft_Shadows";
-  EXPECT_THAT(check({{badName, {}, {}}}),
+  EXPECT_THAT(check({{badName, {}}}),
               refused("checkSceneTable: entry 0 ('Soft_Shadows'): the name is not kebab-case "
                       "(a-z, 0-9, '-')"));
   // TC03: sampling settings no sampler accepts
-  EXPECT_THAT(check({{{"a", "a valid entry for the check", course.make}, {}, {}},
-                     {{"b", "a valid entry for the check", course.make}, {.samples = 0}, {}}}),
+  EXPECT_THAT(check({{{"a", "a valid entry for the check", course.make}, {}},
+                     {{"b", "a valid entry for the check", course.make}, {.samples = 0}}}),
               refused("checkDemoTable: entry 1 ('b'): its sampling settings are refused: "
                       "JitteredSampler: grid must be between 1 and 64, got 0"));
-  // TC04: a knob listed twice
-  EXPECT_THAT(
-      check({{course, {}, {DemoKnob::Samples, DemoKnob::Samples}}}),
-      refused("checkDemoTable: entry 0 ('soft-shadows'): the knob samples is listed twice"));
-  // TC05: a knob with nothing to act on (no beam in this scene)
-  EXPECT_THAT(check({{course, {}, {DemoKnob::FrostedGrid}}}),
-              refused("checkDemoTable: entry 0 ('soft-shadows'): the knob frostedGrid has nothing "
-                      "to act on in its scene"));
 }
 
 // ---- what each scene shows ------------------------------------------------------------------
@@ -325,7 +273,7 @@ TEST(DemoScenesTests, softShadows) {
   // TC02: 32 shadow rays where one point light casts one: exactly 32 times as many (no shape
   // reflects or refracts, so every shaded point is a camera ray's)
   const Rendered soft = render(d, 60, 40);
-  setKnob(d, DemoKnob::ShadowSamples, 1);
+  d = setupOf(demo::softShadows({.shadowSamples = 1}), d.sampling);
   const Rendered hard = render(d, 60, 40);
   EXPECT_GT(hard.counts.shadow, 0u);
   EXPECT_EQ(32 * hard.counts.shadow, soft.counts.shadow);
@@ -334,7 +282,7 @@ TEST(DemoScenesTests, softShadows) {
   EXPECT_TRUE(splitBySeed(d, 60, 40).varying.empty());
   // TC04: with 32, the floor has pixels that do (the penumbrae), and the shapes' lit sides do not
   // (a sphere's pixel sees the whole disk or, turned away, none of it)
-  setKnob(d, DemoKnob::ShadowSamples, 32);
+  d = setupOf(demo::softShadows({.shadowSamples = 32}), d.sampling);
   const SeedSplit split = splitBySeed(d, 60, 40);
   EXPECT_TRUE(split.varying.count(0));  // the floor
   EXPECT_TRUE(split.steady.count(0));   // fully lit floor
@@ -357,12 +305,12 @@ TEST(DemoScenesTests, antialiasing) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: one ray per pixel (samples=1): every pixel is one of the five flat colours, and all
   // five occur
-  setKnob(d, DemoKnob::Samples, 1);
+  d.sampling.samples = 1;
   const Rendered one = render(d, 40, 30);
   EXPECT_EQ(flat, colours(one.image));
   EXPECT_EQ(40u * 30u, one.counts.primary);
   // TC02: the scene's 4 x 4 samples: 16 rays per pixel, and pixels on edges mix the colours
-  setKnob(d, DemoKnob::Samples, 4);
+  d.sampling.samples = 4;
   const Rendered sixteen = render(d, 40, 30);
   EXPECT_EQ(16u * 40u * 30u, sixteen.counts.primary);
   EXPECT_GT(colours(sixteen.image).size(), 30u);
@@ -386,12 +334,11 @@ TEST(DemoScenesTests, depthOfField) {
   EXPECT_EQ(24u * 48u * 27u, lens.counts.primary);
   // TC03: aperture 0 is the pinhole: one ray per pixel through its centre, the same bits as the
   // centre sampler's image
-  DemoSetup pinholeSetup = d;
-  setKnob(pinholeSetup, DemoKnob::Aperture, 0);
+  const DemoSetup pinholeSetup = setupOf(demo::depthOfField({.aperture = 0}), d.sampling);
   const Rendered pinhole = render(pinholeSetup, 48, 27);
   EXPECT_EQ(48u * 27u, pinhole.counts.primary);
   Image centred(48, 27);
-  (void)renderBlock(cameraOf(pinholeSetup, 48, 27), BeamTracer(d.scene), CenterSampler(),
+  (void)renderBlock({cameraOf(pinholeSetup, 48, 27), BeamTracer(d.scene), CenterSampler()},
                     {0, 0, 48, 27}, centred);
   for (int y = 0; y < 27; ++y)
     for (int x = 0; x < 48; ++x)
@@ -452,33 +399,35 @@ TEST(DemoScenesTests, adaptive) {
 TEST(DemoScenesTests, superSampling) {
   const DemoSetup off = built("super-sampling");
   // ============ Equivalence Partitions Tests ==============
-  // TC01: every knob off: the Whitted tracer's image, bit for bit, with the same rays
+  // TC01: every technique off: the Whitted tracer's image, bit for bit, with the same rays
   const Rendered beams = render(off, 40, 30);
   Image whitted(40, 30);
-  const RayCounts counts = renderBlock(cameraOf(off, 40, 30), WhittedTracer(off.scene),
-                                       CenterSampler(), {0, 0, 40, 30}, whitted);
+  const RayCounts counts = renderBlock(
+      {cameraOf(off, 40, 30), WhittedTracer(off.scene), CenterSampler()}, {0, 0, 40, 30}, whitted);
   for (int y = 0; y < 30; ++y)
     for (int x = 0; x < 40; ++x)
       ASSERT_TRUE(sameBits(whitted.pixel(x, y), beams.image.pixel(x, y)));
   EXPECT_EQ(counts, beams.counts);
-  // TC02: each knob costs the rays it names: N = 2 samples, 4 times the camera rays; 3 lens
+  // TC02: each technique costs the rays it names: N = 2 samples, 4 times the camera rays; 3 lens
   // samples, 3 times; a glossy or frosted beam, more secondary rays; 8 shadow rays, more shadow
   // rays but at most 8 times; adaptive, at least the 4 corners of every pixel
-  const auto with = [&](std::initializer_list<std::pair<DemoKnob, double>> knobs) {
-    DemoSetup d = off;
-    for (const auto& [k, v] : knobs) setKnob(d, k, v);
+  const auto with = [&](const demo::SuperSamplingParams& params,
+                        void (*sampling)(SamplingSettings&)) {
+    DemoSetup d = setupOf(demo::superSampling(params), off.sampling);
+    sampling(d.sampling);
     return render(d, 40, 30).counts;
   };
+  const auto as = [](SamplingSettings&) {};
   const RayCounts& base = beams.counts;
-  EXPECT_EQ(4 * base.primary, with({{DemoKnob::Samples, 2}}).primary);
+  EXPECT_EQ(4 * base.primary, with({}, [](SamplingSettings& s) { s.samples = 2; }).primary);
   EXPECT_EQ(3 * base.primary,
-            with({{DemoKnob::LensSamples, 3}, {DemoKnob::Aperture, 0.1}}).primary);
-  EXPECT_GT(with({{DemoKnob::GlossyGrid, 8}}).secondary, base.secondary);
-  EXPECT_GT(with({{DemoKnob::FrostedGrid, 8}}).secondary, base.secondary);
-  const RayCounts soft = with({{DemoKnob::ShadowSamples, 8}});
+            with({.aperture = 0.1}, [](SamplingSettings& s) { s.lensSamples = 3; }).primary);
+  EXPECT_GT(with({.glossyGrid = 8}, as).secondary, base.secondary);
+  EXPECT_GT(with({.frostedGrid = 8}, as).secondary, base.secondary);
+  const RayCounts soft = with({.shadowSamples = 8}, as);
   EXPECT_GT(soft.shadow, base.shadow);
   EXPECT_LE(soft.shadow, 8 * base.shadow);
-  EXPECT_GE(with({{DemoKnob::Adaptive, 1}}).primary, 4 * base.primary);
+  EXPECT_GE(with({}, [](SamplingSettings& s) { s.adaptive = true; }).primary, 4 * base.primary);
 }
 
 }  // namespace

@@ -53,11 +53,11 @@ TEST(DeterminismTests, blocksPixelsAndSeeds) {
     // TC01: the whole image in one block, and the same image in 5 x 5 tiles rendered last tile
     // first: the same bits, and the same ray counts
     Image whole(24, 14), tiled(24, 14);
-    const RayCounts a = renderBlock(f.camera, f.tracer, *sampler, {0, 0, 24, 14}, whole);
+    const RayCounts a = renderBlock({f.camera, f.tracer, *sampler}, {0, 0, 24, 14}, whole);
     RayCounts b;
     for (int y0 = 10; y0 >= 0; y0 -= 5)
       for (int x0 = 20; x0 >= 0; x0 -= 5)
-        b += renderBlock(f.camera, f.tracer, *sampler,
+        b += renderBlock({f.camera, f.tracer, *sampler},
                          {x0, y0, std::min(x0 + 5, 24), std::min(y0 + 5, 14)}, tiled);
     for (int y = 0; y < 14; ++y)
       for (int x = 0; x < 24; ++x)
@@ -67,13 +67,13 @@ TEST(DeterminismTests, blocksPixelsAndSeeds) {
     EXPECT_GT(a.shadow, a.primary);     // and the soft shadows' rays
     // TC02: one pixel rendered alone has its colour in the whole image
     Image alone(24, 14);
-    renderBlock(f.camera, f.tracer, *sampler, {13, 7, 14, 8}, alone);
+    renderBlock({f.camera, f.tracer, *sampler}, {13, 7, 14, 8}, alone);
     EXPECT_TRUE(sameBits(whole.pixel(13, 7), alone.pixel(13, 7)));
     // TC03: another seed changes the noise: some pixel differs
     SamplingSettings other = settings;
     other.seed = 6;
     Image reseeded(24, 14);
-    renderBlock(f.camera, f.tracer, *makePixelSampler(other), {0, 0, 24, 14}, reseeded);
+    renderBlock({f.camera, f.tracer, *makePixelSampler(other)}, {0, 0, 24, 14}, reseeded);
     int different = 0;
     for (int y = 0; y < 14; ++y)
       for (int x = 0; x < 24; ++x)

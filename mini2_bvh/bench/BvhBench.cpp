@@ -22,12 +22,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "benchmark/Measure.h"
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
 #include "camera/Camera.h"
@@ -37,14 +37,6 @@
 
 namespace rt {
 namespace {
-
-/// The CPU time this thread has used, in seconds: what a build or a pass costs, whatever else
-/// the machine runs meanwhile (other processes still slow it through shared caches and cores).
-double threadSeconds() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 /// A field of /proc/self/status in kB ("VmRSS:", "VmHWM:"), or -1.
 long statusKb(const char* field) {
@@ -74,11 +66,11 @@ Timing timeClosestHit(const Intersectable& shapes, const std::vector<Ray>& rays)
   QueryCounts counts;
   double best = INFINITE_DISTANCE, total = 0;
   for (int pass = 0; pass < 3 || total < 0.3; ++pass) {
-    const double start = threadSeconds();
+    const double start = threadCpuSeconds();
     for (std::size_t i = 0; i < rays.size(); ++i)
       timing.answers[i] =
           shapes.closestHit(rays[i], INFINITE_DISTANCE, pass == 0 ? &counts : nullptr);
-    const double seconds = threadSeconds() - start;
+    const double seconds = threadCpuSeconds() - start;
     best = std::min(best, seconds);
     total += seconds;
   }
@@ -157,9 +149,9 @@ void randomScenes(const std::vector<std::uint32_t>& sizes) {
               "depth", "BVH MB", "B/sphere");
   for (std::uint32_t n : sizes) {
     const Geometries scene = randomSpheres(n);
-    const double start = threadSeconds();
+    const double start = threadCpuSeconds();
     const Bvh bvh(scene);
-    const double ms = 1e3 * (threadSeconds() - start);
+    const double ms = 1e3 * (threadCpuSeconds() - start);
     std::printf("%10u %10.1f %8zu %8d %10.1f %8.1f\n", n, ms, bvh.nodes().size(), bvh.depth(),
                 static_cast<double>(bvh.memoryBytes()) / 1e6,
                 static_cast<double>(bvh.memoryBytes()) / n);
@@ -196,11 +188,11 @@ void galaxyScene(long stars, bool whole) {
   const char* name = whole ? "galaxy" : "stars";
   std::uint32_t spheres = 0;
   for (const Geometry& shape : scene.shapes()) spheres += std::holds_alternative<Sphere>(shape);
-  const double buildStart = threadSeconds();
+  const double buildStart = threadCpuSeconds();
   const Bvh bvh(scene);
   std::printf("\n%s: %u shapes, %u spheres; BVH built in %.2f ms, %zu nodes\n",
               whole ? "Galaxy, the whole scene" : "Galaxy, its spheres alone", scene.size(),
-              spheres, 1e3 * (threadSeconds() - buildStart), bvh.nodes().size());
+              spheres, 1e3 * (threadCpuSeconds() - buildStart), bvh.nodes().size());
   // The seed's camera: from (100,27,22) at (4,8,4), 1280 x 720.
   const Camera camera = g.camera.builder().build();
   const int nX = camera.nX(), nY = camera.nY();
@@ -219,12 +211,12 @@ void galaxyScene(long stars, bool whole) {
   std::uint64_t sink = 0;
   double seconds = INFINITE_DISTANCE;
   for (int pass = 0; pass < 3; ++pass) {
-    const double start = threadSeconds();
+    const double start = threadCpuSeconds();
     for (int i = 0; i < nY; ++i)
       for (int j = 0; j < nX; ++j)
         if (const auto hit = bvh.closestHit(camera.constructRay(nX, nY, j, i)))
           sink += hit->geometry;
-    seconds = std::min(seconds, threadSeconds() - start);
+    seconds = std::min(seconds, threadCpuSeconds() - start);
   }
   std::printf("%s, BVH, camera ray + closest hit + trivial shader: %.0f rays/s (sink %llu)\n", name,
               nX * nY / seconds, static_cast<unsigned long long>(sink));

@@ -135,7 +135,7 @@ int run(int argc, char** argv) {
   view.nY = width * 9 / 16;
   Camera camera = view.builder().build();
   const WhittedTracer tracer(g.scene, &bvh);
-  renderBlock(camera, tracer, CenterSampler{}, {0, 0, view.nX, view.nY}, camera.image());
+  renderBlock({camera, tracer, CenterSampler{}}, {0, 0, view.nX, view.nY}, camera.image());
 
   // Depth-first over the flat array: a node's first child is the next node.
   if (maxDepth < 0) maxDepth = bvh.depth();

@@ -18,7 +18,8 @@
 //    middle of the seed's view): the generation time of the scene and the build time and size of
 //    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
 //    and N threads (medians of R renders, alternately), and the peak resident size of a process
-//    that did only that (each galaxy is measured in a child process of its own: bvh/Measure.h).
+//    that did only that (each galaxy is measured in a child process of its own:
+//    benchmark/GalaxyScaling.h, which rt bench --scaling uses too).
 // A timing is never a test: this prints figures, it asserts nothing.
 
 #include <algorithm>
@@ -29,10 +30,11 @@
 #include <string>
 #include <vector>
 
-#include "bvh/Measure.h"
-#include "bvh/TileGrid.h"
-#include "bvh/TilePool.h"
+#include "benchmark/GalaxyScaling.h"
+#include "benchmark/Measure.h"
 #include "camera/Camera.h"
+#include "parallel/TileGrid.h"
+#include "parallel/TilePool.h"
 
 namespace rt {
 namespace {
@@ -44,42 +46,9 @@ struct BenchOptions {
   int tileSize = RenderOptions::DEFAULT_TILE_SIZE;
 };
 
-/// The medians of `repeat` renders on 1 and on `threads` threads, run alternately.
-struct Comparison {
-  double wall[2] = {0, 0};  ///< median wall seconds: [0] one thread, [1] `threads`
-  double cpu[2] = {0, 0};   ///< median process CPU seconds
-  double best[2] = {0, 0};  ///< fastest wall seconds
-  RayCounts counts[2];
-  bool sameImage = true;
-  double speedUp() const { return wall[0] / wall[1]; }
-};
-
-Comparison compareThreads(const Camera& camera, const RayTracer& tracer, const BenchOptions& o) {
-  const CenterSampler sampler;
-  Image images[2] = {Image(camera.nX(), camera.nY()), Image(camera.nX(), camera.nY())};
-  std::vector<double> wall[2], cpu[2];
-  Comparison c;
-  for (int r = 0; r < o.repeat; ++r)
-    for (int k = 0; k < 2; ++k) {
-      const double cpuStart = processCpuSeconds();
-      const RenderResult result =
-          renderImage(camera, tracer, sampler, images[k],
-                      {.threads = k == 0 ? 1 : o.threads, .tileSize = o.tileSize});
-      cpu[k].push_back(processCpuSeconds() - cpuStart);
-      wall[k].push_back(result.seconds);
-      c.counts[k] = result.counts;
-    }
-  for (int k = 0; k < 2; ++k) {
-    c.wall[k] = median(wall[k]);
-    c.cpu[k] = median(cpu[k]);
-    c.best[k] = *std::min_element(wall[k].begin(), wall[k].end());
-  }
-  for (int y = 0; y < camera.nY(); ++y)
-    for (int x = 0; x < camera.nX(); ++x)
-      c.sameImage = c.sameImage &&
-                    std::memcmp(&images[0].pixel(x, y), &images[1].pixel(x, y), sizeof(Color)) == 0;
-  c.sameImage = c.sameImage && c.counts[0] == c.counts[1];
-  return c;
+/// The renders' options: 1 and o.threads threads, alternately.
+TimingOptions timing(const BenchOptions& o) {
+  return {.threads = {1, o.threads}, .repeat = o.repeat, .tileSize = o.tileSize};
 }
 
 /// The load balance of the pool, measured without the machine's load: every tile's cost is
@@ -98,7 +67,7 @@ void tileBalance(const Camera& camera, const RayTracer& tracer, int threads) {
     std::vector<double> cost(grid.size());
     for (std::uint64_t i = 0; i < grid.size(); ++i) {
       const double start = threadCpuSeconds();
-      renderBlock(camera, tracer, sampler, grid.tile(i), image);
+      renderBlock({camera, tracer, sampler}, grid.tile(i), image);
       cost[i] = threadCpuSeconds() - start;
     }
     // The workers' next free times, earliest first.
@@ -121,8 +90,9 @@ void tileBalance(const Camera& camera, const RayTracer& tracer, int threads) {
 void scaling(const char* name, bool diffusion, int nX, int nY, const BenchOptions& o) {
   const GalaxyRender g(GalaxyParams{.diffusion = diffusion});
   const Camera camera = seedView(g.setup, nX, nY);
-  const Comparison c = compareThreads(camera, *g.tracer, o);
-  const RayCounts& rays = c.counts[0];
+  const CenterSampler sampler;
+  const TimedRenders c = timeRenders({camera, *g.tracer, sampler}, timing(o));
+  const RayCounts& rays = c.rays[0];
   std::printf(
       "\n%s, %d x %d, one camera ray per pixel: %llu rays per render (%llu camera, %llu "
       "reflected/refracted, %llu shadow); tiles of %d; %d renders each, alternately\n",
@@ -135,21 +105,13 @@ void scaling(const char* name, bool diffusion, int nX, int nY, const BenchOption
   const double total = static_cast<double>(rays.total());
   for (int k = 0; k < 2; ++k)
     std::printf("%8d %14.3f %10.3f %14.0f %10.2f %9.2f %14.0f\n", k == 0 ? 1 : o.threads, c.wall[k],
-                c.best[k], total / c.wall[k], c.cpu[k] / c.wall[k], c.wall[0] / c.wall[k],
+                c.fastest[k], total / c.wall[k], c.cpu[k] / c.wall[k], c.wall[0] / c.wall[k],
                 total / c.cpu[k]);
   std::printf("images and ray counts on 1 and %d threads: %s\n", o.threads,
               c.sameImage ? "the same bits" : "DIFFERENT");
   std::printf("load balance on %d threads, from each tile's measured cost:\n", o.threads);
   tileBalance(camera, *g.tracer, o.threads);
 }
-
-/// One galaxy's row of the stars table, measured in a child process of its own.
-struct StarsRow {
-  std::uint32_t shapes = 0;
-  double generateSeconds = 0, buildSeconds = 0;
-  std::size_t bvhBytes = 0;
-  Comparison comparison;
-};
 
 void stars(const std::vector<long>& sizes, const BenchOptions& o) {
   std::printf(
@@ -161,19 +123,13 @@ void stars(const std::vector<long>& sizes, const BenchOptions& o) {
               "build s", "BVH MB", "1 thr cpu", "1 thr wall", "N thr wall", "speed-up", "rays",
               "peak MB");
   for (const long n : sizes) {
-    const auto measured = measureInChildProcess<StarsRow>([n, &o] {
-      const GalaxyRender g(GalaxyParams{.stars = n, .diffusion = false});
-      const Camera camera = seedView(g.setup, 400, 400);
-      return StarsRow{g.setup.scene.geometries.size(), g.generateSeconds, g.buildSeconds,
-                      g.bvh->memoryBytes(), compareThreads(camera, *g.tracer, o)};
-    });
-    const StarsRow& r = measured->value;
-    const Comparison& c = r.comparison;
-    std::printf("%8ld %8u %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
-                r.shapes, r.generateSeconds, r.buildSeconds, static_cast<double>(r.bvhBytes) / 1e6,
-                c.cpu[0], c.wall[0], c.wall[1], c.speedUp(),
-                static_cast<unsigned long long>(c.counts[0].total()),
-                static_cast<double>(measured->peakBytes) / (1024.0 * 1024.0),
+    const GalaxyMeasurement r = *measureGalaxy(n, 400, 400, timing(o));
+    const TimedRenders& c = r.renders;
+    std::printf("%8ld %8llu %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
+                static_cast<unsigned long long>(r.shapes), r.generateSeconds, r.buildSeconds,
+                static_cast<double>(r.bvhBytes) / 1e6, c.cpu[0], c.wall[0], c.wall[1], c.speedUp(),
+                static_cast<unsigned long long>(c.rays[0].total()),
+                static_cast<double>(r.peakBytes) / (1024.0 * 1024.0),
                 c.sameImage ? "" : "  DIFFERENT IMAGES");
     std::fflush(stdout);
   }

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bvh/TileGrid.h"
+#include "parallel/TileGrid.h"
 
 namespace rt {
 namespace {

@@ -15,11 +15,11 @@
 #include <variant>
 
 #include "bvh/Bvh.h"
-#include "bvh/TilePool.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
 #include "glossy/Samplers.h"
+#include "parallel/TilePool.h"
 #include "reflections/CourseScenes.h"
 #include "support/AllocationCounter.h"
 
@@ -135,8 +135,8 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
     // The references, serial (stage 4's renderBlock over the whole image): the linear scan's
     // image, and the BVH's counts; the BVH's image is the linear scan's (part 1).
     Image linear(nX, nY), serial(nX, nY);
-    renderBlock(s.camera, *s.linear, *s.sampler, all, linear);
-    const RayCounts counts = renderBlock(s.camera, *s.accelerated, *s.sampler, all, serial);
+    renderBlock({s.camera, *s.linear, *s.sampler}, all, linear);
+    const RayCounts counts = renderBlock({s.camera, *s.accelerated, *s.sampler}, all, serial);
     ASSERT_EQ(firstDifference(linear, serial), "");
     EXPECT_GT(counts.total(), counts.primary);  // secondary or shadow rays were cast
     // ============ Equivalence Partitions Tests ==============
@@ -148,7 +148,7 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
                                PoolShape{4, 1}, PoolShape{2, 1000}}) {
       SCOPED_TRACE(std::to_string(p.threads) + " threads, tiles of " + std::to_string(p.tileSize));
       Image image(nX, nY);
-      const RenderResult r = renderImage(s.camera, *s.accelerated, *s.sampler, image,
+      const RenderResult r = renderImage({s.camera, *s.accelerated, *s.sampler}, image,
                                          {.threads = p.threads, .tileSize = p.tileSize});
       EXPECT_EQ(firstDifference(serial, image), "");
       EXPECT_EQ(r.counts, counts);
@@ -221,7 +221,7 @@ std::uint64_t pixelsBeforeStop(int threads, std::uint64_t stopAt) {
   std::atomic<std::uint64_t> done{0};
   Image image(64, 64);
   const RenderResult r =
-      renderImage(cameraOf(64, 64), tracer, CenterSampler(), image,
+      renderImage({cameraOf(64, 64), tracer, CenterSampler()}, image,
                   {.threads = threads, .tileSize = 8, .stop = &stop, .donePixels = &done});
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(r.counts.total(), r.pixels);
@@ -250,8 +250,8 @@ TEST(TilePoolTests, stop) {
   const ProbeTracer tracer;
   const std::atomic<bool> never{false};
   Image image(64, 64);
-  const RenderResult r =
-      renderImage(cameraOf(64, 64), tracer, CenterSampler(), image, {.threads = 2, .stop = &never});
+  const RenderResult r = renderImage({cameraOf(64, 64), tracer, CenterSampler()}, image,
+                                     {.threads = 2, .stop = &never});
   EXPECT_FALSE(r.interrupted);
   EXPECT_TRUE(complete(image));
 }
@@ -270,7 +270,9 @@ TEST(TilePoolTests, exceptions) {
     });
     Image image(64, 64);
     EXPECT_THAT(
-        [&] { renderImage(camera, tracer, sampler, image, {.threads = threads, .tileSize = 8}); },
+        [&] {
+          renderImage({camera, tracer, sampler}, image, {.threads = threads, .tileSize = 8});
+        },
         ThrowsMessage<std::runtime_error>(HasSubstr("tracer failed at pixel")))
         << threads << " threads";
     // TC02: on one thread, nothing is traced after the exception
@@ -283,8 +285,11 @@ TEST(TilePoolTests, exceptions) {
     const ProbeTracer tracer(
         [](std::uint64_t, const SampleContext&) { throw std::out_of_range("every ray fails"); });
     Image image(64, 64);
-    EXPECT_THAT([&] { renderImage(camera, tracer, sampler, image, {.threads = 4, .tileSize = 4}); },
-                ThrowsMessage<std::out_of_range>(HasSubstr("every ray fails")));
+    EXPECT_THAT(
+        [&] {
+          renderImage({camera, tracer, sampler}, image, {.threads = 4, .tileSize = 4});
+        },
+        ThrowsMessage<std::out_of_range>(HasSubstr("every ray fails")));
   }
 }
 
@@ -300,11 +305,11 @@ TEST(TilePoolTests, progressOncePerTile) {
     if (done.load() != (call - 1) / 64 * 64) ++wrong;
   });
   Image image(64, 64);
-  renderImage(camera, tracer, sampler, image, {.threads = 1, .tileSize = 8, .donePixels = &done});
+  renderImage({camera, tracer, sampler}, image, {.threads = 1, .tileSize = 8, .donePixels = &done});
   EXPECT_EQ(wrong.load(), 0);
   // TC02: at the end, every pixel, on several threads too (added to what the counter held)
   EXPECT_EQ(done.load(), 64u * 64u);
-  renderImage(camera, tracer, sampler, image, {.threads = 3, .tileSize = 7, .donePixels = &done});
+  renderImage({camera, tracer, sampler}, image, {.threads = 3, .tileSize = 7, .donePixels = &done});
   EXPECT_EQ(done.load(), 2u * 64u * 64u);
 }
 
@@ -313,7 +318,7 @@ TEST(TilePoolTests, progressOncePerTile) {
 int completeRender(int nX, int nY, const RenderOptions& options) {
   const ProbeTracer tracer;
   Image image(nX, nY);
-  const RenderResult r = renderImage(cameraOf(nX, nY), tracer, CenterSampler(), image, options);
+  const RenderResult r = renderImage({cameraOf(nX, nY), tracer, CenterSampler()}, image, options);
   const auto pixels = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
   EXPECT_FALSE(r.interrupted);
   EXPECT_EQ(r.pixels, pixels);
@@ -336,7 +341,7 @@ TEST(TilePoolTests, threadsAndSizes) {
     const Camera camera = cameraOf(40, 40);
     Image image(40, 40);
     const RenderResult r =
-        renderImage(camera, tracer, sampler, image, {.threads = 1, .tileSize = 8});
+        renderImage({camera, tracer, sampler}, image, {.threads = 1, .tileSize = 8});
     EXPECT_EQ(r.threads, 1);
     EXPECT_EQ(elsewhere.load(), 0);
     EXPECT_TRUE(complete(image));
@@ -359,7 +364,7 @@ TEST(TilePoolTests, invalidOptions) {
   const Camera camera = cameraOf(8, 8);
   Image image(8, 8);
   auto render = [&](const RenderOptions& options) {
-    return [&, options] { renderImage(camera, tracer, sampler, image, options); };
+    return [&, options] { renderImage({camera, tracer, sampler}, image, options); };
   };
   // =============== Boundary Values Tests ==================
   // TC11: threads -1 and MAX_THREADS + 1 are refused, naming the value
@@ -374,8 +379,11 @@ TEST(TilePoolTests, invalidOptions) {
               ThrowsMessage<std::invalid_argument>(HasSubstr("tileSize is -5")));
   // TC13: an image that is not the camera's, naming both sizes
   Image other(8, 9);
-  EXPECT_THAT([&] { renderImage(camera, tracer, sampler, other); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("image is 8x9, camera is 8x8")));
+  EXPECT_THAT(
+      [&] {
+        renderImage({camera, tracer, sampler}, other);
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr("image is 8x9, camera is 8x8")));
   // TC14: nothing was traced
   EXPECT_EQ(tracer.calls(), 0u);
   // TC15: the largest accepted thread count and tiles of one pixel are accepted
@@ -394,8 +402,9 @@ TEST(TilePoolTests, allocationsDoNotGrowWithTheImage) {
     setup.camera.nX = setup.camera.nY = side;
     const Camera camera = setup.camera.builder().build();
     Image image(side, side);
-    return testing::allocationsDuring(
-        [&] { renderImage(camera, tracer, sampler, image, {.threads = 1, .tileSize = 4}); });
+    return testing::allocationsDuring([&] {
+      renderImage({camera, tracer, sampler}, image, {.threads = 1, .tileSize = 4});
+    });
   };
   EXPECT_EQ(allocations(8), allocations(64));
 }

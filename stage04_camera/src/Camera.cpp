@@ -122,9 +122,10 @@ Camera& Camera::renderImage(const std::atomic<bool>* stop) {
   // BEGIN SOLUTION: hint: renderImage, every row through renderBlock; mind the stop flag
   if (!rayTracer_) throwMissing("Camera::renderImage", "rayTracer");
   counts_ = {};
+  const RenderContext context{*this, *rayTracer_, *pixelSampler_};
   for (int i = 0; i < spec_.nY; ++i) {
     if (stop != nullptr && stop->load(std::memory_order_relaxed)) throw RenderInterrupted();
-    counts_ += renderBlock(*this, *rayTracer_, *pixelSampler_, {0, i, spec_.nX, i + 1}, image_);
+    counts_ += renderBlock(context, {0, i, spec_.nX, i + 1}, image_);
   }
   return *this;
   // END SOLUTION

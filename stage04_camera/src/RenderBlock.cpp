@@ -27,8 +27,10 @@ Color CenterSampler::pixelColor(const Camera& camera, const RayTracer& tracer, i
   return traceSample(camera, tracer, ctx, x + 0.5, y + 0.5);
 }
 
-RayCounts renderBlock(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,
-                      const PixelBlock& b, Image& image) {
+RayCounts renderBlock(const RenderContext& context, const PixelBlock& b, Image& image) {
+  const Camera& camera = context.camera;
+  const RayTracer& tracer = context.tracer;
+  const PixelSampler& sampler = context.sampler;
   const int nX = camera.nX(), nY = camera.nY();
   if (image.nX() != nX || image.nY() != nY) {
     throw std::invalid_argument("renderBlock: the image is " + std::to_string(image.nX()) + "x" +

@@ -232,7 +232,7 @@ TEST(DebugTracersTests, allocateNothing) {
   for (const RayTracer* tracer : std::initializer_list<const RayTracer*>{&rays, &normals, &hits}) {
     Image image(16, 16);
     EXPECT_EQ(0, testing::allocationsDuring([&] {
-                renderBlock(camera, *tracer, sampler, {0, 0, 16, 16}, image);
+                renderBlock({camera, *tracer, sampler}, {0, 0, 16, 16}, image);
               }));
   }
 }

@@ -168,7 +168,7 @@ TEST(RenderBlockTests, centreSamplerTracesEachPixelOnce) {
   // TC01: a 2x2 block: one ray per pixel, through its centre, with the pixel's context (sample
   // 0, numbers of RandomStream(seed, x, y, 0)); the pixel gets the tracer's colour
   const CenterSampler sampler(77);
-  const RayCounts counts = renderBlock(camera, tracer, sampler, {1, 1, 3, 3}, image);
+  const RayCounts counts = renderBlock({camera, tracer, sampler}, {1, 1, 3, 3}, image);
   ASSERT_EQ(4u, tracer.calls.size());
   const int expected[4][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}};  // row by row
   for (std::size_t k = 0; k < 4; ++k) {
@@ -196,11 +196,11 @@ TEST(RenderBlockTests, blocksGiveTheSameImageAsAWholeRender) {
   const Camera camera = view(5, 3).build();
   const CenterSampler sampler(1);
   Image whole(5, 3), tiled(5, 3);
-  renderBlock(camera, tracer, sampler, {0, 0, 5, 3}, whole);
+  renderBlock({camera, tracer, sampler}, {0, 0, 5, 3}, whole);
   RayCounts sum;
   for (const PixelBlock& b : {PixelBlock{4, 2, 5, 3}, PixelBlock{0, 2, 4, 3},
                               PixelBlock{2, 0, 5, 2}, PixelBlock{0, 0, 2, 2}})
-    sum += renderBlock(camera, tracer, sampler, b, tiled);
+    sum += renderBlock({camera, tracer, sampler}, b, tiled);
   for (int y = 0; y < 3; ++y)
     for (int x = 0; x < 5; ++x) EXPECT_EQ(whole.pixel(x, y), tiled.pixel(x, y)) << x << "," << y;
   // TC02: the tiles' counts add up to the whole image's
@@ -214,23 +214,23 @@ TEST(RenderBlockTests, badBlocksAreRefusedBeforeAnyRay) {
   const CenterSampler sampler;
   Image image(4, 4);
   // TC11: an empty block
-  EXPECT_THROW(renderBlock(camera, tracer, sampler, {1, 1, 1, 3}, image), std::invalid_argument);
+  EXPECT_THROW(renderBlock({camera, tracer, sampler}, {1, 1, 1, 3}, image), std::invalid_argument);
   // TC12: past the right edge, named with the image's size
   try {
-    renderBlock(camera, tracer, sampler, {0, 0, 5, 1}, image);
+    renderBlock({camera, tracer, sampler}, {0, 0, 5, 1}, image);
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ("renderBlock: block columns [0,5) rows [0,1) is empty or not inside the 4x4 image",
                  e.what());
   }
   // TC13: a negative start
-  EXPECT_THROW(renderBlock(camera, tracer, sampler, {0, -1, 1, 1}, image), std::invalid_argument);
+  EXPECT_THROW(renderBlock({camera, tracer, sampler}, {0, -1, 1, 1}, image), std::invalid_argument);
   // TC14: an image that is not the camera's size
   Image small(3, 4);
-  EXPECT_THROW(renderBlock(camera, tracer, sampler, {0, 0, 1, 1}, small), std::invalid_argument);
+  EXPECT_THROW(renderBlock({camera, tracer, sampler}, {0, 0, 1, 1}, small), std::invalid_argument);
   EXPECT_TRUE(tracer.calls.empty());
   // TC15: the whole image is one valid block
-  EXPECT_EQ(16u, renderBlock(camera, tracer, sampler, {0, 0, 4, 4}, image).primary);
+  EXPECT_EQ(16u, renderBlock({camera, tracer, sampler}, {0, 0, 4, 4}, image).primary);
 }
 
 TEST(RenderBlockTests, allocatesNothing) {
@@ -243,7 +243,7 @@ TEST(RenderBlockTests, allocatesNothing) {
   Image image(16, 16);
   RayCounts counts;
   EXPECT_EQ(0, testing::allocationsDuring([&] {
-              counts = renderBlock(camera, tracer, sampler, {0, 0, 16, 16}, image);
+              counts = renderBlock({camera, tracer, sampler}, {0, 0, 16, 16}, image);
             }));
   EXPECT_EQ(256u, counts.primary);
   // TC02: the intersection tests were counted (one shape per ray)

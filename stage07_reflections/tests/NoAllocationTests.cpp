@@ -46,7 +46,7 @@ TEST(NoAllocationTests, whittedTracer) {
     const CenterSampler sampler;
     RayCounts counts;
     EXPECT_EQ(0, testing::allocationsDuring([&] {
-                counts = renderBlock(camera, tracer, sampler, {0, 0, 60, 60}, image);
+                counts = renderBlock({camera, tracer, sampler}, {0, 0, 60, 60}, image);
               }));
     EXPECT_GT(counts.secondary, 1000u);
   }

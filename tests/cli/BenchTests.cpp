@@ -33,8 +33,8 @@ using test::run;
 /// mini 2's) but stage 4's debugging views.
 const std::vector<std::string> STAGE_TRACERS{"ambient", "phong", "shadow", "whitted", "beams"};
 
-/// The rows' names in the documented order: the seed's four, then one per stage's tracer, named
-/// by its stage.
+/// The rows' names in the documented order: the reference report's four, then one per stage's
+/// tracer, named by its stage.
 std::vector<std::string> expectedNames() {
   std::vector<std::string> names{"no acceleration", "threads", "threads + CBR",
                                  "threads + CBR + BVH"};
@@ -47,7 +47,7 @@ int cores() { return static_cast<int>(std::max(1u, std::thread::hardware_concurr
 // ---------------------------------------------------------------------------------------------
 // The timing table
 
-TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
+TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   const Outcome r = run({"bench", "galaxy", "--width", "16", "--height", "9", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
@@ -61,9 +61,9 @@ TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
   const json& rows = j["rows"];
   const std::vector<std::string> names = expectedNames();
   ASSERT_EQ(rows.size(), names.size());
-  const std::vector<std::string> keys{"name",          "tracer",      "accel",     "threads",
-                                      "seconds",       "primary",     "secondary", "shadow",
-                                      "raysPerSecond", "nodesPerRay", "speedup",   "seedSeconds"};
+  const std::vector<std::string> keys{
+      "name",      "tracer", "accel",         "threads",     "seconds", "primary",
+      "secondary", "shadow", "raysPerSecond", "nodesPerRay", "speedup", "referenceSeconds"};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::vector<std::string> got;
     for (const auto& [key, value] : rows[i].items()) got.push_back(key);
@@ -73,7 +73,8 @@ TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
     EXPECT_EQ(got, sortedKeys) << i;
     EXPECT_EQ(rows[i]["name"], names[i]) << i;
   }
-  // TC03: the seed's rows render with the galaxy's tracer, beams, and the seed's accelerations
+  // TC03: the reference rows render with the galaxy's tracer, beams, and the report's
+  // accelerations
   const std::vector<std::string> accels{"none", "none", "cbr", "bvh"};
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "beams") << i;
@@ -89,7 +90,7 @@ TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
   for (const json& row : rows) EXPECT_EQ(row["threads"], 1) << row["name"];
   // TC06: one camera ray per pixel in every row
   for (const json& row : rows) EXPECT_EQ(row["primary"], 144) << row["name"];
-  // TC07: the seed's rows trace the same rays: the images are the same bits, so are the counts
+  // TC07: the reference rows trace the same rays: the images are the same bits, so are the counts
   for (std::size_t i = 1; i < 4; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
@@ -103,11 +104,12 @@ TEST(BenchTests, jsonRowsAreTheSeedsThenEveryTracerWithExactCounts) {
   EXPECT_EQ(rows[1]["nodesPerRay"], 0);
   for (std::size_t i = 3; i < rows.size(); ++i)
     EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
-  // TC10: the seed's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s, 6 min
-  // 47 s), null after them
-  const std::vector<int> seed{4860, 1540, 837, 407};
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(rows[i]["seedSeconds"], seed[i]) << i;
-  for (std::size_t i = 4; i < rows.size(); ++i) EXPECT_TRUE(rows[i]["seedSeconds"].is_null()) << i;
+  // TC10: the reference report's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s,
+  // 6 min 47 s), null after them
+  const std::vector<int> reference{4860, 1540, 837, 407};
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
+  for (std::size_t i = 4; i < rows.size(); ++i)
+    EXPECT_TRUE(rows[i]["referenceSeconds"].is_null()) << i;
   // TC11: the speed-up is over the first row: exactly 1 there; the times and rates positive
   EXPECT_EQ(rows[0]["speedup"], 1);
   for (const json& row : rows) {
@@ -145,37 +147,39 @@ TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
   EXPECT_EQ(rows[0]["primary"], 64 * 9);
 }
 
-TEST(BenchTests, markdownHasACaptionAndTheSeedsTimes) {
+TEST(BenchTests, markdownHasACaptionAndTheReferenceTimes) {
   const Outcome r =
       run({"bench", "galaxy", "--param", "diffusion=off", "--width", "16", "--height", "9"});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<std::string> out = lines(r.out);
   ASSERT_EQ(out.size(), 4 + expectedNames().size()) << r.out;
-  // TC01: a caption naming the scene, the size and the seed's times, then an empty line
+  // TC01: a caption naming the scene, the size and the reference times, then an empty line
   EXPECT_TRUE(out[0].starts_with("rt bench galaxy: 16x9, " + std::to_string(cores()) +
                                  " threads for the multi-threaded rows, "))
       << out[0];
   EXPECT_TRUE(out[0].ends_with(
-      "; one render per row; seed: the seed report's times for its galaxy at 1280x720"))
+      "; one render per row; reference: the reference report's times for its galaxy at 1280x720"))
       << out[0];
   EXPECT_EQ(out[1], "");
   // TC02: the header and the alignment line, exactly
   EXPECT_EQ(out[2],
-            "| row | tracer | accel | threads | wall | seed | primary | secondary | shadow | "
+            "| row | tracer | accel | threads | wall | reference | primary | secondary | shadow | "
             "rays/s | nodes/ray | speed-up |");
   EXPECT_EQ(out[3],
             "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-  // TC03: the seed's rows carry its times, written as the seed's report has them
-  const std::vector<std::string> seed{"1 h 21 min", "25 min 40 s", "13 min 57 s", "6 min 47 s"};
+  // TC03: the reference rows carry the report's times, written as the report has them
+  const std::vector<std::string> reference{"1 h 21 min", "25 min 40 s", "13 min 57 s",
+                                           "6 min 47 s"};
   for (std::size_t i = 0; i < 4; ++i)
-    EXPECT_NE(out[4 + i].find(" s | " + seed[i] + " | 144 | "), std::string::npos) << out[4 + i];
+    EXPECT_NE(out[4 + i].find(" s | " + reference[i] + " | 144 | "), std::string::npos)
+        << out[4 + i];
   EXPECT_TRUE(out[4].starts_with("| no acceleration | beams | none | 1 | ")) << out[4];
   EXPECT_TRUE(out[4].ends_with(" | 0.00 | 1.00 |")) << out[4];
-  // TC04: an empty seed cell after them
+  // TC04: an empty reference cell after them
   EXPECT_NE(out[8].find(" s |  | 144 | "), std::string::npos) << out[8];
 }
 
-TEST(BenchTests, csvOfAnotherSceneHasNoSeedTimes) {
+TEST(BenchTests, csvOfAnotherSceneHasNoReferenceTimes) {
   const Outcome r = run({"bench", "two-color", "--width", "16", "--height", "16", "--csv"});
   ASSERT_EQ(r.code, 0) << r.err;
   const std::vector<std::string> out = lines(r.out);
@@ -183,13 +187,14 @@ TEST(BenchTests, csvOfAnotherSceneHasNoSeedTimes) {
   // TC01: the header line, exactly
   EXPECT_EQ(out[0],
             "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,"
-            "speedup,seedSeconds");
+            "speedup,referenceSeconds");
   // TC02: the first row: the scene's tracer (ambient), no acceleration, one thread, 256 camera
-  // rays and no others, no nodes, speed-up 1, and no seed time (the seed timed its galaxy only)
+  // rays and no others, no nodes, speed-up 1, and no reference time (the report timed its galaxy
+  // only)
   EXPECT_TRUE(out[1].starts_with("no acceleration,ambient,none,1,")) << out[1];
   EXPECT_NE(out[1].find(",256,0,0,"), std::string::npos) << out[1];
   EXPECT_TRUE(out[1].ends_with(",0,1,")) << out[1];
-  // TC03: every row has the twelve fields and an empty seed field
+  // TC03: every row has the twelve fields and an empty reference field
   for (std::size_t i = 1; i < out.size(); ++i) {
     EXPECT_EQ(std::count(out[i].begin(), out[i].end(), ','), 11) << out[i];
     EXPECT_TRUE(out[i].ends_with(",")) << out[i];
@@ -424,7 +429,7 @@ TEST(BenchTests, stopBeforeTheFirstRowWritesNothing) {
 }
 
 TEST(BenchProcessTests, ctrlCStopsTheBenchWithinARow) {
-  // TC01: the seed's size, whose first row takes minutes: SIGINT once it has started
+  // TC01: the reference report's size, whose first row takes minutes: SIGINT once it has started
   test::RtChild child({"bench", "--full", "--csv"});
   ASSERT_TRUE(child.waitForLine("rt bench: row 1/")) << child.err();
   child.signal(SIGINT);

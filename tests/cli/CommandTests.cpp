@@ -18,7 +18,7 @@
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
-#include "glossy/DemoScenes.h"
+#include "glossy/DemoTable.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
 #include "reflections/CourseScenes.h"

@@ -59,5 +59,8 @@ STUB_MISSING="" check "TC04 dry run with an extra package" 0 \
 # TC05: --pretend-missing makes an installed package missing
 STUB_MISSING="" check "TC05 dry run, pretend missing" 0 \
   "deps.sh: dry run: missing: make" --dry-run --pretend-missing make
+# TC06: the test command's extras (scripts/test-all.sh): matplotlib missing is named alone
+STUB_MISSING="python3-matplotlib" check "TC06 dry run, the test command's extras" 0 \
+  "deps.sh: dry run: missing: python3-matplotlib" --dry-run python3 python3-matplotlib
 
 ((failures == 0))

@@ -1,6 +1,6 @@
 #include "cli/BuiltinScenes.h"
 
-#include <set>
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -9,21 +9,6 @@
 #include "common/NearestName.h"
 
 namespace rt::cli {
-
-void registerCli(CliRegistry& registry);  // generated: one call per stage present
-
-const CliRegistry& cliRegistry() {
-  static const CliRegistry registry = [] {
-    CliRegistry r;
-    registerCli(r);
-    std::set<std::string_view> names;
-    for (const BuiltinScene& s : r.scenes)
-      if (!names.insert(s.name).second)
-        throw std::logic_error("built-in scenes: the name '" + s.name + "' is used twice");
-    return r;
-  }();
-  return registry;
-}
 
 std::span<const BuiltinScene> builtinScenes() { return cliRegistry().scenes; }
 

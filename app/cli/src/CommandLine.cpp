@@ -94,40 +94,96 @@ std::string helpOf(const CLI::App& app) {
   return app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
 }
 
-/// The option of app that CLI11's message is about: CLI11's errors carry no other trace of it.
-/// The message starts with the option's name, "--output: ..." or, for a flag given a value,
-/// "quiet was given a disallowed flag override".
-const CLI::Option* optionInMessage(const CLI::App& app, std::string_view message) {
-  std::string name(message.substr(0, message.find_first_of(": ")));
-  name.erase(0, name.find_first_not_of('-'));
-  for (const CLI::Option* o : app.get_options())
-    if (!o->get_positional() && (o->check_lname(name) || o->check_sname(name))) return o;
-  return nullptr;
+/// The option an argument of the command line names: "--width", "--width=3", "-o", "-ofile";
+/// nullptr for a value or an unknown name.
+const CLI::Option* optionNamed(const CLI::App& app, const std::string& arg) {
+  if (!looksLikeOption(arg)) return nullptr;
+  const std::string name = arg.starts_with("--") ? arg.substr(0, arg.find('=')) : arg.substr(0, 2);
+  const CLI::Option* o = app.get_option_no_throw(name);
+  return o != nullptr && !o->get_positional() ? o : nullptr;
 }
 
-/// rt's words for what CLI11 refused while parsing args for command (or the program).
-std::string describe(const CLI::ParseError& e, const CLI::App& command,
-                     std::span<const std::string> args) {
-  // Our validators' messages, after the option's name: "--width: expected an integer ...".
-  if (dynamic_cast<const CLI::ValidationError*>(&e)) return e.what();
-  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
-    if (const CLI::Option* o = optionInMessage(command, e.what())) {
-      const std::string name = o->get_name();
-      const int values = o->get_items_expected_max();
-      // A flag (no value) complains only when given one: --quiet=yes.
-      if (values == 0) {
-        const auto given = std::find_if(args.begin(), args.end(), [&name](const std::string& a) {
-          return a.starts_with(name + "=");
-        });
-        return "option " + name + " takes no value" +
-               (given == args.end() ? "" : ", got '" + *given + "'") + seeHelp(command);
-      }
-      if (o->count() > static_cast<std::size_t>(values))
-        return "option " + name + " given twice" + seeHelp(command);
+/// The values an option holds: CLI11's results without the empty one that "--width=" leaves.
+std::size_t valuesGiven(const CLI::Option& o) {
+  const std::vector<std::string>& results = o.results();
+  return static_cast<std::size_t>(std::count_if(results.begin(), results.end(),
+                                                [](const std::string& r) { return !r.empty(); }));
+}
+
+/// A CLI::ArgumentMismatch: CLI11 found an option with the wrong number of values. Which option,
+/// and how, is read from the command's options and the arguments, in the order given: a flag
+/// given a value (--quiet=yes), an option given more values than it takes (twice), or fewer.
+std::optional<std::string> argumentMismatch(const CLI::App& command,
+                                            std::span<const std::string> args) {
+  const auto end = std::find(args.begin(), args.end(), "--");
+  for (auto it = args.begin(); it != end; ++it) {
+    const CLI::Option* o = optionNamed(command, *it);
+    if (o == nullptr) continue;
+    const std::string name = o->get_name();
+    const int most = o->get_items_expected_max();
+    if (most == 0) {
+      if (it->find('=') != std::string::npos)
+        return "option " + name + " takes no value, got '" + *it + "'" + seeHelp(command);
+      continue;
+    }
+    const std::size_t given = valuesGiven(*o);
+    if (given > static_cast<std::size_t>(most))
+      return "option " + name + " given twice" + seeHelp(command);
+    if (given < static_cast<std::size_t>(o->get_items_expected_min()))
       return "option " + name + " expects " + o->get_type_name() + seeHelp(command);
+    // Its values, which may look like options (`-o --width`), are not names: one occurrence
+    // takes all of a fixed count, or one group of a repeatable option's.
+    const int taken = o->get_expected_max() == CLI::detail::expected_max_vector_size
+                          ? o->get_type_size_max()
+                          : most;
+    if (it->find('=') == std::string::npos && !(it->size() > 2 && (*it)[1] != '-'))
+      it += std::min<std::ptrdiff_t>(taken, end - it - 1);
+  }
+  return std::nullopt;
+}
+
+/// A CLI::ValidationError: one of the command's values failed a validator. The message is the
+/// validator's own (rt's: "expected an integer from 1 to 32768, got 'wide'"), found by running
+/// each given option's validators again on its values, after the option's name.
+std::optional<std::string> validationFailure(CLI::App& command) {
+  for (CLI::Option* o : command.get_options()) {
+    for (std::string value : o->results()) {  // a copy: a transformer rewrites it
+      for (int i = 0;; ++i) {
+        const CLI::Validator* validator = nullptr;
+        try {
+          validator = o->get_validator(i);
+        } catch (const CLI::OptionNotFound&) {
+          break;  // past the last
+        }
+        std::string message;
+        try {
+          message = (*validator)(value);
+        } catch (const CLI::ValidationError& e) {  // CLI11's own validators may throw theirs
+          message = e.what();
+        }
+        if (!message.empty()) return o->get_name() + ": " + message;
+      }
     }
   }
-  return e.what() + seeHelp(command);
+  return std::nullopt;
+}
+
+/// rt's words for what CLI11 refused while parsing args for command (or the program), from the
+/// exception's type and the command's options. CLI11's own text (e.what()) is shown only for an
+/// error rt's settings do not produce (a conversion error: every value is a string or an
+/// integer a validator has rewritten to digits).
+std::string describe(const CLI::ParseError& e, CLI::App& command,
+                     std::span<const std::string> args) {
+  std::optional<std::string> message;
+  if (dynamic_cast<const CLI::ValidationError*>(&e))
+    message = validationFailure(command);
+  else if (dynamic_cast<const CLI::ArgumentMismatch*>(&e))
+    message = argumentMismatch(command, args);
+  else if (dynamic_cast<const CLI::RequiredError*>(&e))
+    for (const CLI::Option* o : command.get_options())
+      if (o->get_required() && o->count() == 0 && !message)
+        message = "missing " + o->get_name() + " for " + commandLabel(command) + seeHelp(command);
+  return message ? *message : e.what() + seeHelp(command);
 }
 
 /// `--pixel 1 2`: a value that should be a comma-separated list, given without a comma and
@@ -252,7 +308,7 @@ CLI::App& CommandLine::addCommand(const std::string& name, const std::string& su
 }
 
 CommandLine::Parsed CommandLine::parse(std::span<const std::string> args) {
-  const auto chosen = [this]() -> const CLI::App* {
+  const auto chosen = [this]() -> CLI::App* {
     const std::vector<CLI::App*> parsed = app_->get_subcommands();
     return parsed.empty() ? nullptr : parsed.front();
   };

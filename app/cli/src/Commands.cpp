@@ -1,15 +1,12 @@
 #include "cli/Commands.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <climits>
 #include <filesystem>
 #include <ostream>
-#include <sstream>
 #include <vector>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Image.h"
 #include "cli/BuiltinScenes.h"
 #include "cli/CommandLine.h"
@@ -160,93 +157,6 @@ void addSceneArguments(CLI::App& command, SceneArguments& into, const std::strin
               "N")
       ->transform(integerValidator(0, INT_MAX));
   for (const auto& add : cliRegistry().sceneOptions) add(command, into.settings);
-}
-
-// An Image keeps a Color (three doubles) per pixel, and the PNG writer an RGB byte triple.
-void checkImageFits(int nX, int nY) {
-  const double bytes = static_cast<double>(nX) * nY * (sizeof(Color) + 3);
-  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || pageSize <= 0) return;  // unknown: let the allocation decide
-  const double memory = static_cast<double>(pages) * static_cast<double>(pageSize);
-  if (bytes > memory) {
-    std::ostringstream os;
-    os.precision(3);
-    os << "a " << nX << "x" << nY << " image needs " << bytes / (1u << 30)
-       << " GiB, more than this machine's " << memory / (1u << 30) << " GiB of memory";
-    throw UsageError(os.str());
-  }
-}
-
-SceneDocument sceneFromArguments(const SceneArguments& arguments) {
-  SceneDocument doc = loadSceneArgument(arguments.argument, arguments.params);
-  if (arguments.view) {
-    std::vector<std::string_view> names;
-    const NamedView* chosen = nullptr;
-    for (const NamedView& v : doc.views) {
-      names.push_back(v.name);
-      if (v.name == *arguments.view) chosen = &v;
-    }
-    if (!chosen) {
-      const std::string known = joinNames(names);
-      throw UsageError("--view: the scene has no view '" + *arguments.view + "'" +
-                       didYouMean(*arguments.view, names) + " (" +
-                       (names.empty() ? std::string("it has none") : "its views: " + known) + ")");
-    }
-    doc.camera = chosen->camera;
-  }
-  CameraSpec& c = doc.camera;
-  constexpr int kMax = Image::MAX_SIDE;
-  const int nX0 = c.nX, nY0 = c.nY;
-  const auto scaled = [](int given, int num, int den) {
-    return static_cast<int>(
-        std::max<long long>(1, (2LL * given * num + den) / (2LL * den)));  // given·num/den, rounded
-  };
-  if (arguments.width && arguments.height) {
-    c.nX = *arguments.width;
-    c.nY = *arguments.height;
-    // Another aspect ratio than the scene's: the view plane's height follows the image's, so
-    // that pixels stay square and nothing is squashed.
-    if (static_cast<long long>(c.nX) * nY0 != static_cast<long long>(c.nY) * nX0)
-      c.vpHeight = c.vpWidth * c.nY / c.nX;
-  } else if (arguments.width) {
-    c.nX = *arguments.width;
-    c.nY = scaled(c.nX, nY0, nX0);
-  } else if (arguments.height) {
-    c.nY = *arguments.height;
-    c.nX = scaled(c.nY, nX0, nY0);
-  }
-  if (c.nX < 1 || c.nX > kMax || c.nY < 1 || c.nY > kMax)
-    throw UsageError("the image's resolution " + std::to_string(c.nX) + "x" + std::to_string(c.nY) +
-                     " is outside 1.." + std::to_string(kMax) + " per side");
-  if (arguments.tracer) doc.render.tracer = *arguments.tracer;
-  if (arguments.seed) doc.render.seed = static_cast<std::uint64_t>(*arguments.seed);
-  if (arguments.settings.threads) doc.render.threads = *arguments.settings.threads;
-  if (arguments.settings.accel) doc.render.accel = *arguments.settings.accel;
-  findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
-  return doc;
-}
-
-void warnAboutScene(const SceneDocument& doc, const SceneArguments& arguments, bool rendering,
-                    const Io& io) {
-  for (const std::string& w : doc.warnings) io.err << "rt: warning: " << w << "\n";
-  const Scene& scene = *doc.scene;
-  const Double3& ambient = scene.ambientLight.intensity().rgb();
-  const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
-  if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
-      !ambient.isExactlyZero())
-    return;
-  // The later stages' tracers, which show the lights (not the debugging views).
-  std::string others;
-  for (const TracerKind& t : tracerKinds())
-    if (t.name != "ambient" && !t.debugView) others += (others.empty() ? "" : ", ") + t.name;
-  io.err << "rt: warning: the ambient tracer ("
-         << (arguments.tracer ? "--tracer ambient" : "the scene's render.tracer")
-         << ") shows the ambient light wherever a ray hits a shape, and this scene's ambient "
-            "light is zero (ambient.color x ambient.kA): every shape will be black; give the "
-            "scene an ambient light"
-         << (others.empty() ? ""
-                            : ", or render with a tracer that shows its lights (" + others + ")")
-         << "\n";
 }
 
 }  // namespace rt::cli

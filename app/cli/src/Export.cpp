@@ -3,7 +3,7 @@
 #include <ostream>
 #include <vector>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/AtomicFile.h"
 #include "cli/BuiltinScenes.h"
 #include "scenefile/SceneFile.h"

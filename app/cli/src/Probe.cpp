@@ -3,9 +3,10 @@
 #include <ostream>
 #include <utility>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Camera.h"
 #include "cli/Registry.h"
+#include "cli/RenderRequest.h"
 #include "cli/Tracers.h"
 #include "cli/Values.h"
 #include "common/JsonText.h"
@@ -27,14 +28,11 @@ int probe(const ProbeArgs& args, const Io& io) {
   if (byRay == byPixel)
     throw UsageError(std::string(byRay ? "give only one of" : "missing") +
                      " --ray OX,OY,OZ DX,DY,DZ or --pixel X,Y (see rt probe --help)");
-  SceneDocument doc = sceneFromArguments(args.scene);
-  warnAboutScene(doc, args.scene, false, io);
-
-  const CliRegistry& registry = cliRegistry();
-  const std::unique_ptr<Intersectable> accelerator =
-      registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
-  const std::unique_ptr<RayTracer> tracer =
-      findTracer(doc.render.tracer).make(doc, accelerator.get());
+  // A pixel's colour needs the camera's image (its size is checked); a ray's does not.
+  const RenderRequest request =
+      resolveRenderRequest(args.scene, {.makesImage = byPixel, .renders = false});
+  for (const std::string& w : request.warnings) io.err << "rt: " << w << "\n";
+  const SceneDocument& doc = request.doc;
   std::optional<Ray> ray;
   Color color;
   if (byRay) {
@@ -44,17 +42,17 @@ int probe(const ProbeArgs& args, const Io& io) {
     if (direction.isZero())
       throw UsageError("--ray direction: must not be the zero vector, got '" + directionText + "'");
     ray.emplace(Point(origin), Vector(direction));
-    color = tracer->traceRay(*ray);
+    color = request.buildTracer().tracer->traceRay(*ray);
   } else {
     const int nX = doc.camera.nX, nY = doc.camera.nY;
     const auto [x, y] = parseIntPair(*args.pixel, "--pixel", nX - 1, nY - 1);
-    checkImageFits(nX, nY);
-    const Camera camera = doc.camera.builder().build();
+    const RenderSetup setup = request.build();
+    const Camera& camera = setup.camera;
     // The hits are those of the ray through the pixel's centre; the colour is the pixel's, as a
     // render computes it (every sample of the render's sampler): the same bits as in the image.
     ray = camera.ray(x + 0.5, y + 0.5);
     RayCounts counts;
-    color = registry.makeSampler(doc.render)->pixelColor(camera, *tracer, x, y, counts);
+    color = setup.sampler->pixelColor(camera, *setup.tracer, x, y, counts);
   }
   io.out << probeJson(doc, *ray, color);
   return EXIT_OK;

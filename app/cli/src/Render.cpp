@@ -7,12 +7,13 @@
 #include <optional>
 #include <ostream>
 
-#include "CommandTable.h"
+#include "CommandRegistration.h"
 #include "camera/Camera.h"
 #include "camera/ImageWriter.h"
 #include "camera/RenderBlock.h"
 #include "cli/Progress.h"
 #include "cli/Registry.h"
+#include "cli/RenderRequest.h"
 #include "cli/Tracers.h"
 
 namespace rt::cli {
@@ -28,26 +29,19 @@ struct RenderArgs {
 };
 
 int render(const RenderArgs& args, const Io& io) {
-  // Everything is checked before the first ray: the scene, the options, the output path and the
-  // image's size. A mistake costs no render time.
-  const std::string& sceneArg = args.scene.argument;
-  SceneDocument doc = sceneFromArguments(args.scene);
-  const std::optional<std::string>& outArg = args.output;
-  const std::string output = outArg ? *outArg : defaultOutputPath(sceneArg);
-  checkOutputWritable(output, PNG_IMAGE, outArg ? "-o" : "the default output");
+  // Everything is checked before the first ray (the scene, the options, the output path, the
+  // image's size), in one step; then everything is built.
+  const RenderRequest request = resolveRenderRequest(
+      args.scene,
+      {.writesImage = true, .output = args.output, .makesImage = true, .renders = true});
+  if (!args.silent)
+    for (const std::string& w : request.warnings) io.err << "rt: " << w << "\n";
+  const SceneDocument& doc = request.doc;
+  const std::string& output = request.output;
+  const TracerKind& kind = *request.tracer;
   const int nX = doc.camera.nX, nY = doc.camera.nY;
-  checkImageFits(nX, nY);
-
-  const CliRegistry& registry = cliRegistry();
-  const TracerKind& kind = findTracer(doc.render.tracer);
-  if (!args.silent) warnAboutScene(doc, args.scene, true, io);
-  const std::unique_ptr<Intersectable> accelerator =
-      registry.makeAccelerator ? registry.makeAccelerator(doc) : nullptr;
-  const std::unique_ptr<RayTracer> tracer = kind.make(doc, accelerator.get());
-  const std::unique_ptr<PixelSampler> sampler = registry.makeSampler(doc.render);
-  // The camera's own image is the one rendered into and written.
-  Camera camera = doc.camera.builder().build();
-  Image& image = camera.image();
+  RenderSetup setup = request.build();
+  Image& image = setup.camera.image();  // the camera's own image is the one rendered and written
 
   const bool quiet = args.quiet || args.silent;
   const std::uint64_t total = static_cast<std::uint64_t>(nX) * static_cast<std::uint64_t>(nY);
@@ -58,8 +52,8 @@ int render(const RenderArgs& args, const Io& io) {
   {
     std::unique_ptr<ProgressMonitor> progress;
     if (!quiet) {
-      io.err << "rt: rendering " << sceneArg << " (" << nX << "x" << nY << ", tracer " << kind.name
-             << ") to " << output << "\n";
+      io.err << "rt: rendering " << args.scene.argument << " (" << nX << "x" << nY << ", tracer "
+             << kind.name << ") to " << output << "\n";
       progress = std::make_unique<ProgressMonitor>(
           io.err,
           io.errIsTerminal ? ProgressMonitor::Style::Terminal : ProgressMonitor::Style::Lines,
@@ -68,8 +62,8 @@ int render(const RenderArgs& args, const Io& io) {
     // The build's render loop (rows on this thread; tiles on a pool of threads from mini project
     // 2 on): it sees a stop request (Ctrl-C) within a block of pixels, adds each block's counts
     // once and reports its pixels and rays to the progress thread once.
-    outcome = registry.render(
-        {camera, *tracer, *sampler, image, doc.render.threads, io.stop, donePixels, doneRays});
+    outcome = cliRegistry().render(
+        {setup.context(), image, doc.render.threads, io.stop, donePixels, doneRays});
     // A Ctrl-C that arrives after the last block still means "stop": nothing is written.
     interrupted = outcome.interrupted || (io.stop && io.stop->load());
   }  // the progress thread is stopped here, before anything else is printed

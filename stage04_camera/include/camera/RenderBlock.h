@@ -6,7 +6,7 @@
 /// mini project) calls it on square tiles, each thread with its own counts, added up once per
 /// tile (pbrt-v4's ImageTileIntegrator::Render over ParallelFor2D is the model).
 ///
-///     renderBlock(camera, tracer, sampler, block, image)
+///     renderBlock({camera, tracer, sampler}, block, image)
 ///       for each pixel (x, y) of block:
 ///         image(x, y) = sampler.pixelColor(camera, tracer, x, y, counts)
 ///       return counts
@@ -96,13 +96,12 @@ struct RenderContext {
   const PixelSampler& sampler;
 };
 
-/// Renders block into image: each pixel's colour by sampler, with tracer, through camera.
-/// Everything is checked once, before the first ray; then nothing allocates or throws unless
-/// the tracer does.
+/// Renders block into image: each pixel's colour by the context's sampler, with its tracer,
+/// through its camera. Everything is checked once, before the first ray; then nothing allocates
+/// or throws unless the tracer does.
 /// @returns the block's ray counts (to be added to the render's once per block).
 /// @throws std::invalid_argument when the block is empty or not inside the camera's image, or
 ///         image is not the camera's nX x nY.
-RayCounts renderBlock(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,
-                      const PixelBlock& block, Image& image);
+RayCounts renderBlock(const RenderContext& context, const PixelBlock& block, Image& image);
 
 }  // namespace rt

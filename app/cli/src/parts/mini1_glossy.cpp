@@ -1,7 +1,7 @@
 // What rt knows of mini project 1: the beams tracer (glossy surfaces, diffused glass, soft
 // shadows), the samplers the render settings choose (jittered, lens, adaptive), and the seed's
 // galaxy in a glass box with its parameters and points of view, and the demonstration scenes of
-// glossy/DemoScenes.h with their knobs as parameters.
+// glossy/DemoTable.h with their knobs as parameters (mini1_glossy/Knobs.h).
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -11,9 +11,10 @@
 #include "cli/Registry.h"
 #include "cli/Values.h"
 #include "glossy/BeamTracer.h"
-#include "glossy/DemoScenes.h"
+#include "glossy/DemoTable.h"
 #include "glossy/Galaxy.h"
 #include "glossy/Samplers.h"
+#include "mini1_glossy/Knobs.h"
 #include "scenefile/LitDocument.h"
 
 namespace rt::cli {
@@ -29,12 +30,6 @@ SamplingSettings samplingOf(const RenderSettings& r) {
           .seed = r.seed};
 }
 
-bool parseOnOff(const std::string& value, const char* what) {
-  if (value == "on" || value == "true" || value == "1") return true;
-  if (value == "off" || value == "false" || value == "0") return false;
-  throw UsageError(std::string("--param ") + what + ": expected on or off, got '" + value + "'");
-}
-
 SceneDocument galaxyDocument(const SceneParams& p) {
   GalaxyParams params;
   params.arms = parseInt(p.at("arms"), "--param arms", 1, GalaxyParams::MAX_ARMS);
@@ -47,42 +42,6 @@ SceneDocument galaxyDocument(const SceneParams& p) {
   SceneDocument doc = litDocument(std::move(g.scene), g.camera);
   for (const NamedView& v : g.views) doc.views.push_back(v);
   doc.render.tracer = "beams";
-  return doc;
-}
-
-/// A knob's value as --param shows it: on or off for adaptive, a number otherwise.
-std::string knobText(DemoKnob knob, double value) {
-  if (knob == DemoKnob::Adaptive) return value == 1 ? "on" : "off";
-  return formatNumber(value);
-}
-
-/// A demonstration scene as a document: its scene and camera, its sampling settings as the render
-/// settings, each --param given set on it first (the table's defaults are the scene's own values).
-SceneDocument demoDocument(const DemoScene& entry, const SceneParams& p) {
-  DemoSetup setup = entry.build();
-  for (const DemoKnob knob : entry.knobs) {
-    const DemoKnobInfo& info = knobInfo(knob);
-    const std::string& text = p.at(info.name);
-    const std::string what = std::string("--param ") + info.name;
-    const double value = knob == DemoKnob::Adaptive ? (parseOnOff(text, info.name) ? 1 : 0)
-                         : info.integer ? parseInt(text, what, static_cast<int>(info.min),
-                                                   static_cast<int>(info.max))
-                                        : parseDouble(text, what);
-    try {
-      setKnob(setup, knob, value);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError("--param " + std::string(e.what()));
-    }
-  }
-  SceneDocument doc = litDocument(std::move(setup.scene), setup.camera);
-  const SamplingSettings& s = setup.sampling;
-  doc.render.tracer = "beams";
-  doc.render.samples = s.samples;
-  doc.render.lensSamples = s.lensSamples;
-  doc.render.adaptive = s.adaptive;
-  doc.render.adaptiveThreshold = s.adaptiveThreshold;
-  doc.render.adaptiveDepth = s.adaptiveDepth;
-  doc.render.seed = s.seed;
   return doc;
 }
 
@@ -111,20 +70,13 @@ void registerCli_mini1_glossy(CliRegistry& registry) {
         {"diffusion", "on", "the glass box's beams (on or off)"},
         {"layout", "1", "the generator's seed: where the stars are"}},
        galaxyDocument});
-  for (const DemoScene& entry : demoScenes()) {
-    std::vector<SceneParam> params;
-    const DemoSetup defaults = entry.build();
-    for (const DemoKnob knob : entry.knobs) {
-      const DemoKnobInfo& info = knobInfo(knob);
-      params.push_back({info.name, knobText(knob, knobValue(defaults, knob)), info.meaning});
-    }
+  for (const DemoScene& entry : demoScenes())
     registry.scenes.push_back({entry.course.name, entry.course.description, "mini1_glossy", "beams",
-                               std::move(params),
+                               demoParams(entry),
                                [&entry](const SceneParams& p) { return demoDocument(entry, p); }});
-  }
-  registry.makeSampler = [](const RenderSettings& settings) {
+  registry.makeSampler.supply("mini1_glossy", [](const RenderSettings& settings) {
     return makePixelSampler(samplingOf(settings));
-  };
+  });
 }
 
 }  // namespace rt::cli

@@ -5,27 +5,27 @@
 #include <CLI/App.hpp>
 
 #include "bvh/Acceleration.h"
-#include "bvh/TilePool.h"
-#include "mini2_bvh/Bench.h"
 #include "cli/CommandLine.h"
 #include "cli/Registry.h"
 #include "common/NearestName.h"
+#include "mini2_bvh/Bench.h"
+#include "parallel/TilePool.h"
 
 namespace rt::cli {
 
 void registerCli_mini2_bvh(CliRegistry& registry) {
-  registry.makeAccelerator = [](const SceneDocument& doc) {
+  registry.makeAccelerator.supply("mini2_bvh", [](const SceneDocument& doc) {
     return makeAcceleration(doc.render.accel, doc.scene->geometries);
-  };
-  registry.render = [](const RenderJob& job) {
+  });
+  registry.render.supply("mini2_bvh", [](const RenderJob& job) {
     RenderOptions options;
     options.threads = job.threads;
     options.stop = job.stop;
     options.donePixels = &job.donePixels;
     options.doneRays = &job.doneRays;
-    const RenderResult r = renderImage(job.camera, job.tracer, job.sampler, job.image, options);
+    const RenderResult r = renderImage(job.context, job.image, options);
     return RenderOutcome{r.counts, r.interrupted, r.threads};
-  };
+  });
   registry.commands.push_back(addBenchCommand);
   registry.sceneOptions.push_back([](CLI::App& command, SettingOverrides& into) {
     addOptional(command, "--threads", into.threads,

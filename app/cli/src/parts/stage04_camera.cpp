@@ -15,14 +15,14 @@ namespace {
 /// each row's counts are added once, and its pixels reported to the progress thread once.
 RenderOutcome renderRows(const RenderJob& job) {
   RenderOutcome outcome;
-  const int nX = job.camera.nX(), nY = job.camera.nY();
+  const int nX = job.context.camera.nX(), nY = job.context.camera.nY();
   for (int y = 0; y < nY; ++y) {
     if (job.stop && job.stop->load(std::memory_order_relaxed)) {
       outcome.interrupted = true;
       return outcome;
     }
     const PixelBlock row{0, y, nX, y + 1};
-    const RayCounts counts = renderBlock(job.camera, job.tracer, job.sampler, row, job.image);
+    const RayCounts counts = renderBlock(job.context, row, job.image);
     outcome.counts += counts;
     job.donePixels.fetch_add(row.pixels(), std::memory_order_relaxed);
     job.doneRays.fetch_add(counts.total(), std::memory_order_relaxed);
@@ -78,10 +78,10 @@ void registerCli_stage04_camera(CliRegistry& registry) {
   registry.scenes.push_back(
       builtinScene("shapes", "one of each of the six shapes of stage 2, shown by their normals",
                    "normals", shapesScene));
-  registry.makeSampler = [](const RenderSettings& settings) {
+  registry.makeSampler.supply("stage04_camera", [](const RenderSettings& settings) {
     return std::unique_ptr<PixelSampler>(std::make_unique<CenterSampler>(settings.seed));
-  };
-  registry.render = renderRows;
+  });
+  registry.render.supply("stage04_camera", renderRows);
 }
 
 }  // namespace rt::cli

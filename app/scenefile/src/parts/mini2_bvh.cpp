@@ -1,7 +1,7 @@
 // The scene format's mini-project-2 part: the acceleration structure and the threads.
 #include "../Format.h"
 #include "bvh/Acceleration.h"
-#include "bvh/TilePool.h"
+#include "parallel/TilePool.h"
 
 namespace rt::scenefile {
 

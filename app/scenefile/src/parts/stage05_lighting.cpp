@@ -1,59 +1,20 @@
 // The scene format's stage-5 part: lights, materials (named or inline), and each geometry's
 // emission and material. Its scene is a LitScene: geometries that look the same share one row of
-// the appearance table. Also the typed access of scenefile/LitDocument.h.
-#include <bit>
+// the appearance table (lighting/AppearanceInterner.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <utility>
 
 #include "../Format.h"
 #include "../Writers.h"
 #include "Lighting.h"
+#include "lighting/AppearanceInterner.h"
 #include "primitives/Overloaded.h"
 #include "scenefile/LitDocument.h"
 
 namespace rt {
-
-// ---------------------------------------------------------------------------------------------
-// LitDocument.h
-
-LitScene& litScene(SceneDocument& doc) {
-  auto* lit = dynamic_cast<LitScene*>(doc.scene.get());
-  if (!lit) throw std::logic_error("litScene: the document's scene is not a LitScene");
-  return *lit;
-}
-
-const LitScene& litScene(const SceneDocument& doc) {
-  const auto* lit = dynamic_cast<const LitScene*>(doc.scene.get());
-  if (!lit) throw std::logic_error("litScene: the document's scene is not a LitScene");
-  return *lit;
-}
-
-NamedMaterials& namedMaterials(SceneDocument& doc) { return doc.part<NamedMaterials>(); }
-
-const NamedMaterials& namedMaterials(const SceneDocument& doc) {
-  static const NamedMaterials none;
-  const NamedMaterials* m = doc.findPart<NamedMaterials>();
-  return m ? *m : none;
-}
-
-const std::string* materialNameOf(const SceneDocument& doc, std::uint32_t i) {
-  const NamedMaterials* m = doc.findPart<NamedMaterials>();
-  if (!m) return nullptr;
-  const std::uint32_t row = litScene(doc).appearanceIndex[i];
-  if (row >= m->rowNames.size() || !m->rowNames[row]) return nullptr;
-  return &*m->rowNames[row];
-}
-
-SceneDocument litDocument(LitScene scene, const CameraSpec& camera) {
-  SceneDocument doc;
-  doc.scene = std::make_shared<LitScene>(std::move(scene));
-  doc.camera = camera;
-  return doc;
-}
 
 namespace scenefile {
 
@@ -119,50 +80,28 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   look.materialName = name;
 }
 
-/// The bytes of a value, as a key: equal keys mean identical bits.
-template <typename T>
-void appendBits(std::string& key, const T& value) {
-  key.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-/// The rows of the appearance table read so far, by what makes them equal (see appearanceRow):
-/// kept in the reading context while the file is read.
-struct RowIndex {
-  std::unordered_map<std::string, std::uint32_t> rows;
+/// The reading context's interner of the appearance table (see lighting/AppearanceInterner.h).
+struct Rows {
+  std::optional<AppearanceInterner> interner;
 };
 
 /// The row of the appearance table for the geometry's emission and material (checked already):
-/// an existing row when one is identical (the bits of the emission and of the material, and the
-/// material's name when given by name), else a new one.
+/// a row shared with every geometry that looks the same and names the same material (or none).
 std::uint32_t appearanceRow(Context& ctx, const Look& look) {
-  std::string key;
-  appendBits(key, look.emission.rgb());
-  if (look.materialName) {
-    key += 'N';
-    key += *look.materialName;
-  } else {
-    const Material& m = look.material;
-    key += 'M';
-    for (const Double3* k : {&m.kD, &m.kS, &m.kT, &m.kR}) appendBits(key, *k);
-    appendBits(key, m.shininess);
-    appendBits(key, m.ior);
-    for (const BeamSettings* b : {&m.reflectedBeam, &m.refractedBeam}) {
-      appendBits(key, b->distance);
-      appendBits(key, b->radius);
-      appendBits(key, b->grid);
-    }
-  }
-  RowIndex& index = ctx.state<RowIndex>();
-  const auto [it, added] = index.rows.try_emplace(std::move(key), 0);
-  if (added) {
-    SceneDocument& doc = ctx.doc;
-    LitScene& scene = litScene(doc);
-    it->second = scene.addAppearance(look.emission, look.material);
-    NamedMaterials& named = namedMaterials(doc);
+  LitScene& scene = litScene(ctx.doc);
+  std::optional<AppearanceInterner>& interner = ctx.state<Rows>().interner;
+  if (!interner) interner.emplace(scene);
+  if (&interner->scene() != &scene)
+    throw std::logic_error("appearanceRow: the document's scene changed while it was read");
+  const std::size_t before = scene.appearances.size();
+  const std::uint32_t row =
+      interner->row({look.emission, look.material}, look.materialName ? *look.materialName : "");
+  if (scene.appearances.size() != before) {
+    NamedMaterials& named = namedMaterials(ctx.doc);
     named.rowNames.resize(scene.appearances.size());
     named.rowNames.back() = look.materialName;
   }
-  return it->second;
+  return row;
 }
 
 void addLight(const Node& n, LightSource light) {

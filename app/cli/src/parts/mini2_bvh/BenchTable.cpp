@@ -1,7 +1,6 @@
 // The tables of `rt bench` in Markdown, CSV and JSON.
 #include "BenchTable.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -11,19 +10,13 @@
 
 #include "cli/Progress.h"
 #include "common/JsonText.h"
+#include "primitives/Double3.h"
 
 namespace rt::cli {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-/// A double in its shortest form that reads back to the same value (CSV).
-std::string shortest(double v) {
-  char buf[32];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : std::string("nan");
-}
 
 /// A CSV field: quoted when it holds a comma, a quote or a line break (RFC 4180).
 std::string csvField(const std::string& text) {
@@ -97,18 +90,19 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
     case TableFormat::Json: {
       Json rows = Json::array();
       for (const BenchRow& r : table.rows)
-        rows.push_back(Json{{"name", r.name},
-                            {"tracer", r.tracer},
-                            {"accel", r.accel},
-                            {"threads", r.threads},
-                            {"seconds", jsonNumber(r.seconds)},
-                            {"primary", r.counts.primary},
-                            {"secondary", r.counts.secondary},
-                            {"shadow", r.counts.shadow},
-                            {"raysPerSecond", jsonNumber(std::round(r.raysPerSecond()))},
-                            {"nodesPerRay", jsonNumber(r.nodesPerRay())},
-                            {"speedup", jsonNumber(table.speedup(r))},
-                            {"seedSeconds", r.seedSeconds ? jsonNumber(*r.seedSeconds) : Json()}});
+        rows.push_back(Json{
+            {"name", r.name},
+            {"tracer", r.tracer},
+            {"accel", r.accel},
+            {"threads", r.threads},
+            {"seconds", jsonNumber(r.seconds)},
+            {"primary", r.counts.primary},
+            {"secondary", r.counts.secondary},
+            {"shadow", r.counts.shadow},
+            {"raysPerSecond", jsonNumber(std::round(r.raysPerSecond()))},
+            {"nodesPerRay", jsonNumber(r.nodesPerRay())},
+            {"speedup", jsonNumber(table.speedup(r))},
+            {"referenceSeconds", r.referenceSeconds ? jsonNumber(*r.referenceSeconds) : Json()}});
       return formatJson(Json{{"scene", table.scene},
                              {"width", table.width},
                              {"height", table.height},
@@ -120,32 +114,32 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
       std::string out = std::string(BENCH_CSV_HEADER) + "\n";
       for (const BenchRow& r : table.rows)
         out += csvField(r.name) + "," + csvField(r.tracer) + "," + csvField(r.accel) + "," +
-               std::to_string(r.threads) + "," + shortest(r.seconds) + "," +
+               std::to_string(r.threads) + "," + formatNumber(r.seconds) + "," +
                std::to_string(r.counts.primary) + "," + std::to_string(r.counts.secondary) + "," +
-               std::to_string(r.counts.shadow) + "," + shortest(std::round(r.raysPerSecond())) +
-               "," + shortest(r.nodesPerRay()) + "," + shortest(table.speedup(r)) + "," +
-               (r.seedSeconds ? shortest(*r.seedSeconds) : std::string()) + "\n";
+               std::to_string(r.counts.shadow) + "," + formatNumber(std::round(r.raysPerSecond())) +
+               "," + formatNumber(r.nodesPerRay()) + "," + formatNumber(table.speedup(r)) + "," +
+               (r.referenceSeconds ? formatNumber(*r.referenceSeconds) : std::string()) + "\n";
       return out;
     }
     case TableFormat::Markdown:
       break;
   }
-  bool seed = false;
-  for (const BenchRow& r : table.rows) seed = seed || r.seedSeconds.has_value();
-  MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "seed", "primary", "secondary",
-                    "shadow", "rays/s", "nodes/ray", "speed-up"},
+  bool reference = false;
+  for (const BenchRow& r : table.rows) reference = reference || r.referenceSeconds.has_value();
+  MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "reference", "primary",
+                    "secondary", "shadow", "rays/s", "nodes/ray", "speed-up"},
                    {false, false, false, true, true, true, true, true, true, true, true, true});
   for (const BenchRow& r : table.rows)
     md.add({r.name, r.tracer, r.accel, std::to_string(r.threads), formatDuration(r.seconds),
-            r.seedSeconds ? formatDuration(*r.seedSeconds) : std::string(),
+            r.referenceSeconds ? formatDuration(*r.referenceSeconds) : std::string(),
             std::to_string(r.counts.primary), std::to_string(r.counts.secondary),
             std::to_string(r.counts.shadow), fixed(r.raysPerSecond(), 0), fixed(r.nodesPerRay(), 2),
             fixed(table.speedup(r), 2)});
   return "rt bench " + table.scene + ": " + std::to_string(table.width) + "x" +
          std::to_string(table.height) + ", " + std::to_string(table.threads) +
          " threads for the multi-threaded rows, " + table.machine + "; " + rendersOf(table.repeat) +
-         (seed ? "; seed: the seed report's times for its galaxy at 1280x720" : "") + "\n\n" +
-         md.text();
+         (reference ? "; reference: the reference report's times for its galaxy at 1280x720" : "") +
+         "\n\n" + md.text();
 }
 
 std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
@@ -168,7 +162,7 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
       std::string out = std::string(SCALING_CSV_HEADER) + "\n";
       for (const ScalingRow& r : table.rows)
         out += std::to_string(r.stars) + "," + std::to_string(r.shapes) + "," +
-               shortest(r.buildSeconds) + "," + shortest(r.renderSeconds) + "," +
+               formatNumber(r.buildSeconds) + "," + formatNumber(r.renderSeconds) + "," +
                std::to_string(r.peakBytes) + "," + std::to_string(r.bytesPerStar) + "\n";
       return out;
     }
@@ -182,7 +176,7 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
             formatDuration(r.renderSeconds), mebibytes(r.peakBytes),
             std::to_string(r.bytesPerStar)});
   return "rt bench --scaling: the galaxy without diffusion, " + std::to_string(table.width) + "x" +
-         std::to_string(table.height) + " (the middle of the seed's view), beams tracer, BVH, " +
+         std::to_string(table.height) + " (the middle of the reference report's view), beams tracer, BVH, " +
          std::to_string(table.threads) + " threads, " + table.machine + "; " +
          rendersOf(table.repeat) +
          "; each galaxy in a process of its own: BVH build in CPU time, render in wall time, "

@@ -23,7 +23,7 @@ struct BenchRow {
   int threads = 1;     ///< threads that rendered (never more than the image's tiles)
   double seconds = 0;  ///< wall time of the render: the median of the repeats
   RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
-  std::optional<double> seedSeconds{};  ///< the seed report's time for this row, if it has one
+  std::optional<double> referenceSeconds{};  ///< the reference report's time for this row, if any
 
   double raysPerSecond() const;  ///< every ray (primary, secondary, shadow) per wall second
   double nodesPerRay() const;    ///< BVH nodes visited per ray, of every kind
@@ -69,7 +69,7 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format);
 /// The CSV header lines (the tests and the docs quote them).
 inline constexpr std::string_view BENCH_CSV_HEADER =
     "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,speedup,"
-    "seedSeconds";
+    "referenceSeconds";
 inline constexpr std::string_view SCALING_CSV_HEADER =
     "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar";
 

@@ -1,10 +1,12 @@
 #pragma once
 /// @file TilePool.h
 /// The parallel renderer: a small pool of std::threads that hands out square tiles of the image
-/// from one atomic counter, each tile rendered by stage 4's renderBlock (DESIGN.md §4; pbrt-v4's
-/// ImageTileIntegrator::Render over ParallelFor2D is the model).
+/// from one atomic counter, each tile rendered by stage 4's renderBlock. The render loop stays
+/// apart from the camera: the camera only makes rays, and the pool, like the camera's own row
+/// loop, hands blocks of pixels to renderBlock (pbrt-v4's ImageTileIntegrator::Render over
+/// ParallelFor2D is the model).
 ///
-///     renderImage(camera, tracer, sampler, image, options)
+///     renderImage(context, image, options)
 ///       threads = min(options.threads, tiles); the calling thread is one of them
 ///       each thread, until no tile is left (or stop, or another thread failed):
 ///         i = nextTile++                          one atomic add per tile
@@ -62,8 +64,8 @@ struct RenderResult {
   int threads = 1;           ///< threads that rendered, the calling thread included
 };
 
-/// Renders every pixel of image with sampler and tracer through camera, on options.threads
-/// threads.
+/// Renders every pixel of image with context's sampler and tracer through its camera, on
+/// options.threads threads.
 ///
 /// - Stop: an interrupted render returns with interrupted = true and the pixels it rendered
 ///   (the others keep their old values); nothing else is done.
@@ -78,7 +80,7 @@ struct RenderResult {
 /// @throws std::invalid_argument, naming the value, for threads outside 0..MAX_THREADS,
 ///         tileSize < 1, or an image that is not the camera's nX × nY; whatever the tracer or
 ///         the sampler throws; std::system_error when a thread cannot be started.
-RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,
-                         Image& image, const RenderOptions& options = {});
+RenderResult renderImage(const RenderContext& context, Image& image,
+                         const RenderOptions& options = {});
 
 }  // namespace rt

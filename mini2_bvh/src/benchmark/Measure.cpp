@@ -1,4 +1,4 @@
-#include "bvh/Measure.h"
+#include "benchmark/Measure.h"
 
 #include <poll.h>
 #include <sys/prctl.h>

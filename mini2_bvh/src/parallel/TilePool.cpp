@@ -1,4 +1,4 @@
-#include "bvh/TilePool.h"
+#include "parallel/TilePool.h"
 
 #include <algorithm>
 #include <chrono>
@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "bvh/TileGrid.h"
 #include "camera/Camera.h"
+#include "parallel/TileGrid.h"
 
 namespace rt {
 
@@ -21,9 +21,7 @@ namespace {
 /// tile (or row) by every thread: each gets a cache line of its own, so the line that holds the
 /// read-only references is not invalidated by every tile taken.
 struct Shared {
-  const Camera& camera;
-  const RayTracer& tracer;
-  const PixelSampler& sampler;
+  const RenderContext& context;
   Image& image;
   const TileGrid& grid;
   const std::atomic<bool>* stop;
@@ -68,7 +66,7 @@ void renderTiles(Shared& s, WorkerResult& result) noexcept {
       for (int y = tile.y0; y < tile.y1; ++y) {
         if (y > tile.y0 && s.shouldStop()) break;
         const PixelBlock row{tile.x0, y, tile.x1, y + 1};
-        counts += renderBlock(s.camera, s.tracer, s.sampler, row, s.image);
+        counts += renderBlock(s.context, row, s.image);
         tilePixels += row.pixels();
       }
       pixels += tilePixels;
@@ -100,8 +98,8 @@ int requestedThreads(int threads) {
 
 }  // namespace
 
-RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const PixelSampler& sampler,
-                         Image& image, const RenderOptions& options) {
+RenderResult renderImage(const RenderContext& context, Image& image, const RenderOptions& options) {
+  const Camera& camera = context.camera;
   // Everything is checked on the calling thread, before a thread is started.
   int threads = requestedThreads(options.threads);
   if (options.tileSize < 1)
@@ -118,8 +116,7 @@ RenderResult renderImage(const Camera& camera, const RayTracer& tracer, const Pi
       static_cast<int>(std::min<std::uint64_t>(static_cast<std::uint64_t>(threads), grid.size()));
 
   const auto start = std::chrono::steady_clock::now();
-  Shared shared{camera,          tracer, sampler, image, grid, options.stop, options.donePixels,
-                options.doneRays};
+  Shared shared{context, image, grid, options.stop, options.donePixels, options.doneRays};
   std::vector<WorkerResult> results(static_cast<std::size_t>(threads));
   std::vector<std::thread> pool;
   pool.reserve(static_cast<std::size_t>(threads - 1));

@@ -1,4 +1,4 @@
-#include "bvh/TileGrid.h"
+#include "parallel/TileGrid.h"
 
 #include <algorithm>
 #include <stdexcept>

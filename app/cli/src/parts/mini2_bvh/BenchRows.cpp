@@ -1,0 +1,136 @@
+// rt bench's timing table: one scene rendered with the reference report's rows (no acceleration
+// on one thread; threads; threads + CBR; threads + CBR + BVH) beside the report's own times, then
+// by every stage's tracer through the BVH on every thread; rows taken in turn, the medians kept.
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Bench.h"
+#include "BenchOutput.h"
+#include "BenchTable.h"
+#include "benchmark/Measure.h"
+#include "bvh/Acceleration.h"
+#include "camera/Camera.h"
+#include "cli/Registry.h"
+#include "cli/Tracers.h"
+#include "parallel/TilePool.h"
+
+namespace rt::cli {
+
+namespace {
+
+/// The default image's width: the galaxy at 128 x 72, a hundredth of the reference report's
+/// 1280 x 720 pixels, renders the whole table in 2 min 20 s on two loaded cores (160 x 90 took
+/// 5 min 30 s); --full: the scene's own resolution, the report's for the galaxy.
+constexpr int DEFAULT_WIDTH = 128;
+
+/// The reference report's rows and times (the Java project the course started from): its galaxy
+/// at 1280 x 720 (course catalogue §5).
+struct ReferenceRow {
+  const char* name;
+  const char* accel;
+  bool threads;    ///< every core, or one thread
+  double seconds;  ///< the reference report's time
+};
+constexpr ReferenceRow REFERENCE_ROWS[] = {
+    {"no acceleration", "none", false, 4860},   // 1 h 21 min
+    {"threads", "none", true, 1540},            // 25 min 40 s
+    {"threads + CBR", "cbr", true, 837},        // 13 min 57 s
+    {"threads + CBR + BVH", "bvh", true, 407},  // 6 min 47 s
+};
+
+/// A row ready to render: its tracer built over the scene and its acceleration.
+struct PlannedRow {
+  BenchRow row;
+  std::unique_ptr<RayTracer> tracer;
+};
+
+}  // namespace
+
+int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
+  if (args.stars) throw UsageError("--stars: only with --scaling (the galaxy's star counts)");
+  SceneArguments sceneArgs = args.scene;
+  if (args.full && (sceneArgs.width || sceneArgs.height))
+    throw UsageError("--full: the scene's own resolution; give either --full or --width/--height");
+  if (!args.full && !sceneArgs.width && !sceneArgs.height) sceneArgs.width = DEFAULT_WIDTH;
+  const RenderRequest request = resolveRenderRequest(sceneArgs, {.makesImage = true});
+  const SceneDocument& doc = request.doc;
+  const int threads = benchThreads(args);
+
+  // The rows: the reference report's four with the scene's tracer, then every stage's tracer
+  // through the BVH (stage 4's debugging views left out: they do not render the scene's light).
+  // The reference report's times belong to its galaxy only.
+  const bool referenceScene = args.scene.argument == "galaxy";
+  const TracerKind& sceneTracer = findTracer(doc.render.tracer);
+  std::vector<std::pair<BenchRow, const TracerKind*>> plan;
+  for (const ReferenceRow& s : REFERENCE_ROWS)
+    plan.push_back(
+        {BenchRow{.name = s.name,
+                  .tracer = sceneTracer.name,
+                  .accel = s.accel,
+                  .threads = s.threads ? threads : 1,
+                  .referenceSeconds = referenceScene ? std::optional(s.seconds) : std::nullopt},
+         &sceneTracer});
+  for (const TracerKind& kind : tracerKinds())
+    if (!kind.debugView)
+      plan.push_back(
+          {BenchRow{.name = kind.stage, .tracer = kind.name, .accel = "bvh", .threads = threads},
+           &kind});
+
+  // Every structure before the first ray: one acceleration of each kind used, the tracers, the
+  // sampler, the camera and its image (which every row renders into).
+  std::map<std::string, std::unique_ptr<Intersectable>> accelerations;
+  for (const auto& [row, kind] : plan)
+    if (!accelerations.contains(row.accel))
+      accelerations[row.accel] = makeAcceleration(row.accel, doc.scene->geometries);
+  std::vector<PlannedRow> rows;
+  for (auto& [row, kind] : plan) {
+    std::unique_ptr<RayTracer> tracer = kind->make(doc, accelerations.at(row.accel).get());
+    rows.push_back({std::move(row), std::move(tracer)});
+  }
+  const std::unique_ptr<PixelSampler> sampler = cliRegistry().makeSampler(doc.render);
+  Camera camera = doc.camera.builder().build();
+  Image& image = camera.image();
+
+  // Round robin: repeat r renders every row once, so that a change of the machine's load hits
+  // every row alike; each row's time is the median of its renders.
+  std::vector<std::vector<double>> seconds(rows.size());
+  const std::size_t n = rows.size();
+  for (int r = 0; r < args.repeat; ++r)
+    for (std::size_t i = 0; i < n; ++i) {
+      BenchRow& row = rows[i].row;
+      const std::string where = "row " + std::to_string(i + 1) + " of " + std::to_string(n);
+      if (io.stop && io.stop->load()) return benchInterrupted(where, args, io);
+      io.err << "rt bench: row " << i + 1 << "/" << n;
+      if (args.repeat > 1) io.err << ", repeat " << r + 1 << "/" << args.repeat;
+      io.err << ": " << row.name << " (tracer " << row.tracer << ", accel " << row.accel << ", "
+             << threadsText(row.threads) << ")" << std::endl;
+      RenderOptions options;
+      options.threads = row.threads;
+      options.stop = io.stop;
+      const RenderResult result = renderImage({camera, *rows[i].tracer, *sampler}, image, options);
+      if (result.interrupted || (io.stop && io.stop->load()))
+        return benchInterrupted(where, args, io);
+      seconds[i].push_back(result.seconds);
+      row.counts = result.counts;  // the same every repeat: the render is deterministic
+      row.threads = result.threads;
+    }
+
+  BenchTable table{.scene = args.scene.argument,
+                   .width = doc.camera.nX,
+                   .height = doc.camera.nY,
+                   .threads = threads,
+                   .machine = machineName(),
+                   .repeat = args.repeat};
+  for (std::size_t i = 0; i < n; ++i) {
+    rows[i].row.seconds = median(seconds[i]);
+    table.rows.push_back(rows[i].row);
+  }
+  emit(
+      to, [&table](TableFormat f) { return formatBenchTable(table, f); }, io);
+  return EXIT_OK;
+}
+
+}  // namespace rt::cli
