@@ -10,16 +10,6 @@
 
 namespace rt {
 
-namespace {
-
-/// The golden ratio's conjugate φ⁻¹ = (√5 − 1)/2: the lattice's second coordinate steps by it.
-constexpr double INV_PHI = 0.6180339887498949;
-
-/// x − floor(x) for x >= 0.
-double fraction(double x) noexcept { return x - std::floor(x); }
-
-}  // namespace
-
 BeamTracer::BeamTracer(const LitScene& scene, const Intersectable* accelerator,
                        const WhittedSettings& whitted, const BeamTracerSettings& beams,
                        const RayOffset& offset)
@@ -71,8 +61,7 @@ Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t lightIndex,
   const int n = light.samples;
   Double3 sum;
   for (int s = 0; s < n; ++s) {
-    const Sample2 unit{fraction((s + 0.5) / n + shift.u), fraction(s * INV_PHI + shift.v)};
-    const Sample2 d = squareToDisk(unit);
+    const Sample2 d = diskLatticePoint(s, n, shift);
     const Double3 onDisk = centre + disk.inPlane(d.u * light.radius, d.v * light.radius);
     const Double3 toLight = onDisk - h.point.xyz();
     const double distance = std::sqrt(toLight.lengthSquared());

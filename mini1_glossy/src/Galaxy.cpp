@@ -8,17 +8,12 @@
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
 #include "geometries/Sphere.h"
+#include "primitives/Checks.h"
 #include "primitives/Random.h"
 
 namespace rt {
 
 namespace {
-
-[[noreturn]] void badParam(const char* name, long value, long lo, long hi) {
-  throw std::invalid_argument("galaxy: " + std::string(name) + " must be between " +
-                              std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
-                              std::to_string(value));
-}
 
 /// The six faces of the box [lo, hi], each with its vertices counter-clockwise seen from
 /// outside (so every face's normal points out: what refraction needs, see docs/scene-format.md).
@@ -49,9 +44,9 @@ Point placeInDisc(double x, double y, double z) {
 }  // namespace
 
 void GalaxyParams::validate() const {
-  if (arms < 1 || arms > MAX_ARMS) badParam("arms", arms, 1, MAX_ARMS);
-  if (perArm < 1 || perArm > MAX_PER_ARM) badParam("perArm", perArm, 1, MAX_PER_ARM);
-  if (stars < 0 || stars > MAX_STARS) badParam("stars", stars, 0, MAX_STARS);
+  requireBetween(arms, 1, MAX_ARMS, "galaxy", "arms");
+  requireBetween(perArm, 1, MAX_PER_ARM, "galaxy", "perArm");
+  requireBetween(stars, 0, MAX_STARS, "galaxy", "stars");
 }
 
 int GalaxyParams::positionsPerArm() const {

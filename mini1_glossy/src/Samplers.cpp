@@ -6,27 +6,15 @@
 #include <string>
 
 #include "camera/Camera.h"
+#include "primitives/Checks.h"
 
 namespace rt {
 
 namespace {
 
-constexpr double INV_PHI = 0.6180339887498949;  // (√5 − 1)/2
-
-/// x − floor(x) for x >= 0.
-double fraction(double x) noexcept { return x - std::floor(x); }
-
 /// A dimension far beyond what a path uses, for the per-cell lens shift: read with uniform(), a
 /// pure function of the cell's stream, whatever its samples draw.
 constexpr std::uint32_t LENS_SHIFT_DIMENSION = 0xfffffff0u;
-
-void requireRange(int value, int lo, int hi, const char* what, const char* name) {
-  if (value < lo || value > hi) {
-    throw std::invalid_argument(std::string(what) + ": " + name + " must be between " +
-                                std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
-                                std::to_string(value));
-  }
-}
 
 }  // namespace
 
@@ -35,8 +23,8 @@ void requireRange(int value, int lo, int hi, const char* what, const char* name)
 
 JitteredSampler::JitteredSampler(int grid, int lensSamples, std::uint64_t seed)
     : PixelSampler(seed), grid_(grid), lensSamples_(lensSamples) {
-  requireRange(grid, 1, MAX_GRID, "JitteredSampler", "grid");
-  requireRange(lensSamples, 1, MAX_LENS_SAMPLES, "JitteredSampler", "lensSamples");
+  requireBetween(grid, 1, MAX_GRID, "JitteredSampler", "grid");
+  requireBetween(lensSamples, 1, MAX_LENS_SAMPLES, "JitteredSampler", "lensSamples");
 }
 
 Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer, int x, int y,
@@ -61,9 +49,7 @@ Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
           px = x + p.u;
           py = y + p.v;
         }
-        const Sample2 onLens = lens ? squareToDisk({fraction((l + 0.5) / lensCount + shift.u),
-                                                    fraction(l * INV_PHI + shift.v)})
-                                    : Sample2{};
+        const Sample2 onLens = lens ? diskLatticePoint(l, lensCount, shift) : Sample2{};
         sum = sum + traceSample(camera, tracer, ctx, px, py, onLens).rgb();
       }
     }
@@ -108,12 +94,8 @@ struct AdaptiveSampler::Lattice {
 
 AdaptiveSampler::AdaptiveSampler(double threshold, int depthLimit, std::uint64_t seed)
     : PixelSampler(seed), threshold_(threshold), depthLimit_(depthLimit) {
-  if (!(std::isfinite(threshold) && threshold >= 0)) {
-    throw std::invalid_argument(
-        "AdaptiveSampler: threshold must be a non-negative finite number, got " +
-        formatNumber(threshold));
-  }
-  requireRange(depthLimit, 0, MAX_DEPTH, "AdaptiveSampler", "depthLimit");
+  requireNonNegative(threshold, "AdaptiveSampler", "threshold");
+  requireBetween(depthLimit, 0, MAX_DEPTH, "AdaptiveSampler", "depthLimit");
 }
 
 Double3 AdaptiveSampler::refine(Lattice& lattice, const Square& sq) const {

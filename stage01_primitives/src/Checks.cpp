@@ -22,6 +22,21 @@ double requirePositive(double value, std::string_view operation, std::string_vie
   return value;
 }
 
+double requireNonNegative(double value, std::string_view operation, std::string_view argument) {
+  if (!(std::isfinite(value) && value >= 0))
+    reject(operation, argument, "a non-negative finite number", formatNumber(value));
+  return value;
+}
+
+long requireBetween(long value, long lo, long hi, std::string_view operation,
+                    std::string_view argument) {
+  if (value < lo || value > hi) {
+    reject(operation, argument, "between " + std::to_string(lo) + " and " + std::to_string(hi),
+           std::to_string(value));
+  }
+  return value;
+}
+
 const Double3& requireFinite(const Double3& value, std::string_view operation,
                              std::string_view argument) {
   if (!value.isFinite()) reject(operation, argument, "finite", value.str());

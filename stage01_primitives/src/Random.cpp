@@ -30,4 +30,18 @@ Sample2 squareToDisk(const Sample2& s) noexcept {
   return {radius * std::cos(angle), radius * std::sin(angle)};
 }
 
+namespace {
+
+/// The golden ratio's conjugate φ⁻¹ = (√5 − 1)/2: the lattice's second coordinate steps by it.
+constexpr double INV_PHI = 0.6180339887498949;
+
+/// x − floor(x) for x >= 0.
+double fraction(double x) noexcept { return x - std::floor(x); }
+
+}  // namespace
+
+Sample2 diskLatticePoint(int k, int n, const Sample2& shift) noexcept {
+  return squareToDisk({fraction((k + 0.5) / n + shift.u), fraction(k * INV_PHI + shift.v)});
+}
+
 }  // namespace rt

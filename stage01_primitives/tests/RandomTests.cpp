@@ -207,13 +207,45 @@ TEST(RandomTests, squareToDisk) {
   EXPECT_NEAR(std::sqrt(0.5), corner.v, 1e-15);
 }
 
+TEST(RandomTests, diskLatticePoint) {
+  const double invPhi = (std::sqrt(5.0) - 1) / 2;
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: point k of n is the lattice point ((k + 1/2)/n, k·φ⁻¹) shifted, then mapped to the disk
+  const Sample2 p = diskLatticePoint(1, 4, {0.25, 0.125});
+  const Sample2 expected = squareToDisk({1.5 / 4 + 0.25, invPhi + 0.125});
+  EXPECT_EQ(expected.u, p.u);
+  EXPECT_EQ(expected.v, p.v);
+  // TC02: a shifted coordinate past 1 wraps around (modulo 1)
+  const Sample2 wrapped = diskLatticePoint(3, 4, {0.5, 0.5});
+  const Sample2 expectedWrapped = squareToDisk({3.5 / 4 + 0.5 - 1, 3 * invPhi + 0.5 - 2});
+  EXPECT_EQ(expectedWrapped.u, wrapped.u);
+  EXPECT_EQ(expectedWrapped.v, wrapped.v);
+  // TC03: 64 points of one set are inside the unit disk, and the lattice spreads them evenly:
+  // 17 lie within radius 1/2, one off the quarter (16) that area says, where 64 independent
+  // points would scatter by √(64·¼·¾) ≈ 3.5
+  int inner = 0;
+  for (int k = 0; k < 64; ++k) {
+    const Sample2 d = diskLatticePoint(k, 64, {0.3, 0.7});
+    const double r2 = d.u * d.u + d.v * d.v;
+    ASSERT_LE(r2, 1.0);
+    if (r2 < 0.25) ++inner;
+  }
+  EXPECT_EQ(17, inner);
+  // =============== Boundary Values Tests ==================
+  // TC11: one point with the shift (0, 1/2) is the square's centre, the disk's centre
+  const Sample2 centre = diskLatticePoint(0, 1, {0, 0.5});
+  EXPECT_EQ(0.0, centre.u);
+  EXPECT_EQ(0.0, centre.v);
+}
+
 TEST(RandomTests, allocatesNothing) {
-  // TC01: making streams and drawing numbers, squares and disks allocates nothing
+  // TC01: making streams and drawing numbers, squares, disks and disk lattices allocates nothing
   double sum = 0;
   const long n = testing::allocationsDuring([&] {
     for (std::uint32_t s = 0; s < 1000; ++s) {
       RandomStream r(1, s, s, s);
-      sum += r.next() + jitteredCell(1, 2, 4, r).u + squareToDisk(r.next2D()).v;
+      sum += r.next() + jitteredCell(1, 2, 4, r).u + squareToDisk(r.next2D()).v +
+             diskLatticePoint(3, 8, r.next2D()).u;
     }
   });
   EXPECT_EQ(0, n);

@@ -114,6 +114,21 @@ TEST(Double3Tests, isZeroAndIsFinite) {
   EXPECT_FALSE(Double3(std::numeric_limits<double>::infinity(), 0, 0).isFinite());
 }
 
+TEST(Double3Tests, isExactlyZero) {
+  // TC01: the zero triple, and one with negative zeros, are exactly zero
+  EXPECT_TRUE(Double3::ZERO.isExactlyZero());
+  EXPECT_TRUE(Double3(-0.0, 0, -0.0).isExactlyZero());
+  // TC02: a triple that isZero (below the threshold) but is not exactly zero
+  EXPECT_FALSE(Double3(0, kJustBelow, 0).isExactlyZero());
+  // TC11: the smallest positive double in any one component is not zero
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_FALSE(Double3(tiny, 0, 0).isExactlyZero());
+  EXPECT_FALSE(Double3(0, tiny, 0).isExactlyZero());
+  EXPECT_FALSE(Double3(0, 0, -tiny).isExactlyZero());
+  // TC12: NaN is not zero
+  EXPECT_FALSE(Double3(0, 0, std::nan("")).isExactlyZero());
+}
+
 TEST(Double3Tests, formatting) {
   // TC01: the shortest round-trip form of each number
   EXPECT_EQ(formatNumber(0.1), "0.1");

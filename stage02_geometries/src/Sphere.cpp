@@ -17,7 +17,7 @@ Vector Sphere::normal(const Point& p) const {
 std::optional<Vector> Sphere::tryNormal(const Point& p) const noexcept {
   // BEGIN SOLUTION: hint: Sphere::tryNormal, the normal or nullopt at the centre; never throws
   const Double3 d = p.xyz() - center_.xyz();
-  if (d.x == 0 && d.y == 0 && d.z == 0) return std::nullopt;
+  if (d.isExactlyZero()) return std::nullopt;
   return Vector::unchecked(d).normalized();
   // END SOLUTION
 }

@@ -35,7 +35,7 @@ Vector Tube::normal(const Point& p) const {
 std::optional<Vector> Tube::tryNormal(const Point& p) const noexcept {
   // BEGIN SOLUTION: hint: Tube::tryNormal, the normal or nullopt on the axis; never throws
   const Double3 n = radial(p);
-  if (n.x == 0 && n.y == 0 && n.z == 0) return std::nullopt;
+  if (n.isExactlyZero()) return std::nullopt;
   return Vector::unchecked(n).normalized();
   // END SOLUTION
 }

@@ -114,22 +114,26 @@ TEST(SphereIntersectionTests, maxDistance) {
 }
 
 TEST(SphereIntersectionTests, bareDataSolver) {
-  // intersectSphereRoots(centre, radius, ray) is the solver intersectRoots(Sphere) runs: the
-  // same roots, bit for bit (a structure storing spheres compactly relies on it).
-  auto same = [](const Roots& a, const Roots& b) {
-    if (a.size() != b.size()) return false;
-    for (int i = 0; i < a.size(); ++i)
-      if (a[i] != b[i]) return false;
-    return true;
-  };
+  // intersectSphereRoots(centre, radius, ray) is the solver intersectRoots(Sphere) runs, on the
+  // bare data of a sphere (a structure storing spheres compactly calls it): its roots are the
+  // distances along the ray, t = tm ± th with tm = v·(O − P0) and th = √(r² − d²).
   const Double3 centre = kSphere.center().xyz();
-  // TC01: a ray crossing the sphere twice (gp1, gp2)
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a ray crossing the sphere twice: v = (3,1,0)/√10, tm = 6/√10, d² = 4 − 3.6 = 0.4,
+  // th = √0.6; the roots lead to the course's gp1 and gp2
   const Ray crossing(Point(-1, 0, 0), Vector(3, 1, 0));
-  EXPECT_TRUE(same(intersectSphereRoots(centre, 1, crossing), intersectRoots(kSphere, crossing)));
-  EXPECT_EQ(intersectSphereRoots(centre, 1, crossing).size(), 2);
-  // TC02: a ray from inside (one root)
+  const Roots two = intersectSphereRoots(centre, 1, crossing);
+  ASSERT_EQ(two.size(), 2);
+  EXPECT_NEAR(two[0], 6 / std::sqrt(10.0) - std::sqrt(0.6), 1e-14);
+  EXPECT_NEAR(two[1], 6 / std::sqrt(10.0) + std::sqrt(0.6), 1e-14);
+  EXPECT_TRUE(crossing.point(two[0]) == Point(0.0651530771650466, 0.355051025721682, 0));
+  EXPECT_TRUE(crossing.point(two[1]) == Point(1.53484692283495, 0.844948974278318, 0));
+  // TC02: a ray from inside (one root): tm = −0.5, d = 0, th = 1, so t = 0.5 only (the other
+  // root, −1.5, is behind the origin), to the top of the sphere (1, 1, 0)
   const Ray inside(Point(1, 0.5, 0), Vector(0, 1, 0));
-  EXPECT_TRUE(same(intersectSphereRoots(centre, 1, inside), intersectRoots(kSphere, inside)));
+  const Roots one = intersectSphereRoots(centre, 1, inside);
+  ASSERT_EQ(one.size(), 1);
+  EXPECT_EQ(one[0], 0.5);
   // TC03: a ray that misses (no root)
   const Ray missing(Point(-1, 0, 0), Vector(1, 1, 0));
   EXPECT_TRUE(intersectSphereRoots(centre, 1, missing).empty());

@@ -31,14 +31,6 @@ void requireViewPlaneLength(double v, const char* operation, const char* argumen
   }
 }
 
-/// A lens length: a finite number >= 0 (0 means "none" or "the default").
-void requireNonNegative(double v, const char* operation, const char* argument) {
-  if (!(std::isfinite(v) && v >= 0)) {
-    throw std::invalid_argument(std::string(operation) + ": " + argument +
-                                " must be a non-negative finite number, got " + formatNumber(v));
-  }
-}
-
 /// The look-at frame: vTo = normalize(target - p0), vRight = normalize(vTo x up),
 /// vUp = vRight x vTo. up only has to be non-parallel to vTo; the resulting vUp is the
 /// component of up orthogonal to vTo, normalised.

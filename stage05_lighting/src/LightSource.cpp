@@ -31,27 +31,14 @@ std::optional<LightSample> pointSample(const PointLight& light, const Point& p) 
   // END SOLUTION
 }
 
-[[noreturn]] void fail(const char* light, const char* field, const std::string& requirement,
-                       double value) {
-  throw std::invalid_argument(std::string(light) + ": " + field + " must be " + requirement +
-                              ", got " + formatNumber(value));
-}
-
 void validateAttenuation(const char* name, const PointLight& light) {
   requireFinite(light.position.xyz(), name, "position");
   // kC is the attenuation at distance 0: it must be positive or the intensity is infinite there.
   requirePositive(light.kC, name, "kC");
-  if (!(std::isfinite(light.kL) && light.kL >= 0))
-    fail(name, "kL", "a non-negative finite number", light.kL);
-  if (!(std::isfinite(light.kQ) && light.kQ >= 0))
-    fail(name, "kQ", "a non-negative finite number", light.kQ);
-  if (!(std::isfinite(light.radius) && light.radius >= 0))
-    fail(name, "radius", "a non-negative finite number", light.radius);
-  if (light.shadowSamples < 1 || light.shadowSamples > PointLight::MAX_SHADOW_SAMPLES) {
-    throw std::invalid_argument(std::string(name) + ": shadowSamples must be between 1 and " +
-                                std::to_string(PointLight::MAX_SHADOW_SAMPLES) + ", got " +
-                                std::to_string(light.shadowSamples));
-  }
+  requireNonNegative(light.kL, name, "kL");
+  requireNonNegative(light.kQ, name, "kQ");
+  requireNonNegative(light.radius, name, "radius");
+  requireBetween(light.shadowSamples, 1, PointLight::MAX_SHADOW_SAMPLES, name, "shadowSamples");
 }
 
 }  // namespace
@@ -88,8 +75,7 @@ void validate(const LightSource& light) {
                  [](const SpotLight& l) {
                    validateAttenuation("SpotLight", l);
                    requireFinite(l.direction.xyz(), "SpotLight", "direction");
-                   if (!(std::isfinite(l.narrowBeam) && l.narrowBeam >= 0))
-                     fail("SpotLight", "narrowBeam", "a non-negative finite number", l.narrowBeam);
+                   requireNonNegative(l.narrowBeam, "SpotLight", "narrowBeam");
                  },
              },
              light);

@@ -20,15 +20,8 @@ void requireCoefficient(const char* field, const Double3& k) {
 void requireBeam(const char* field, const BeamSettings& beam) {
   const std::string what = std::string("Material: ") + field;
   requirePositive(beam.distance, what, "distance");
-  if (!(std::isfinite(beam.radius) && beam.radius >= 0)) {
-    throw std::invalid_argument(what + ": radius must be a non-negative finite number, got " +
-                                formatNumber(beam.radius));
-  }
-  if (beam.grid < 1 || beam.grid > BeamSettings::MAX_GRID) {
-    throw std::invalid_argument(what + ": grid must be between 1 and " +
-                                std::to_string(BeamSettings::MAX_GRID) + ", got " +
-                                std::to_string(beam.grid));
-  }
+  requireNonNegative(beam.radius, what, "radius");
+  requireBetween(beam.grid, 1, BeamSettings::MAX_GRID, what, "grid");
 }
 
 }  // namespace
@@ -42,10 +35,7 @@ void Material::validate() const {
     throw std::invalid_argument("Material: shininess must be non-negative, got " +
                                 std::to_string(shininess));
   }
-  if (!(std::isfinite(ior) && ior > 0)) {
-    throw std::invalid_argument("Material: ior must be a positive finite number, got " +
-                                formatNumber(ior));
-  }
+  requirePositive(ior, "Material", "ior");
   requireBeam("reflectedBeam", reflectedBeam);
   requireBeam("refractedBeam", refractedBeam);
 }

@@ -10,8 +10,6 @@
 namespace rt {
 
 namespace {
-bool isExactlyZero(const Double3& k) { return k.x == 0 && k.y == 0 && k.z == 0; }
-
 /// x^n for an integer n >= 0 by repeated squaring (⌈log2 n⌉ + popcount(n) multiplications):
 /// several times cheaper than std::pow, which takes the exponent as a double, and within a few
 /// ulps of it for the shininess exponents of the course's materials.
@@ -34,8 +32,8 @@ PhongTracer::PhongTracer(const LitScene& scene, const Intersectable* accelerator
   terms_.reserve(scene.appearances.size());
   for (const Appearance& a : scene.appearances) {
     std::uint8_t t = NONE;
-    if (!isExactlyZero(a.material.kD)) t |= DIFFUSE;
-    if (!isExactlyZero(a.material.kS)) t |= SPECULAR;
+    if (!a.material.kD.isExactlyZero()) t |= DIFFUSE;
+    if (!a.material.kS.isExactlyZero()) t |= SPECULAR;
     terms_.push_back(t);
   }
 }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "TestSupport.h"
 #include "lighting/LightSource.h"
@@ -174,6 +175,35 @@ TEST(SpotLightTests, illuminate) {
   s = illuminate(light, at90);
   ASSERT_TRUE(s.has_value());
   EXPECT_TRUE(colorNear(s->intensity, 100, 200, 300));
+}
+
+TEST(SpotLightTests, settersKeepTheSpotLight) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: every setter of a spot light returns the spot light itself (a SpotLight&, so a chain
+  // can end with setNarrowBeam), and sets its field
+  SpotLight spot(Color::WHITE, Point::ZERO, Vector(0, 0, -2));
+  static_assert(std::is_same_v<SpotLight&, decltype(spot.setKc(2))>);
+  static_assert(std::is_same_v<SpotLight&, decltype(spot.setKl(0.5))>);
+  static_assert(std::is_same_v<SpotLight&, decltype(spot.setKq(0.25))>);
+  static_assert(std::is_same_v<SpotLight&, decltype(spot.setRadius(3))>);
+  static_assert(std::is_same_v<SpotLight&, decltype(spot.setShadowSamples(9))>);
+  SpotLight& chained =
+      spot.setKc(2).setKl(0.5).setKq(0.25).setRadius(3).setShadowSamples(9).setNarrowBeam(4);
+  EXPECT_EQ(&spot, &chained);
+  EXPECT_EQ(2.0, spot.kC);
+  EXPECT_EQ(0.5, spot.kL);
+  EXPECT_EQ(0.25, spot.kQ);
+  EXPECT_EQ(3.0, spot.radius);
+  EXPECT_EQ(9, spot.shadowSamples);
+  EXPECT_EQ(4.0, spot.narrowBeam);
+  EXPECT_EQ(-1.0, spot.direction.z());
+  // TC02: a point light's setters return the point light, and a spot light is a point light
+  PointLight point(Color::WHITE, Point::ZERO);
+  static_assert(std::is_same_v<PointLight&, decltype(point.setKc(2))>);
+  EXPECT_EQ(&point, &point.setKl(0.5).setKq(0.25));
+  EXPECT_EQ(0.5, point.kL);
+  const PointLight& asPoint = spot;
+  EXPECT_EQ(0.25, asPoint.kQ);
 }
 
 TEST(LightSourceTests, sizeForSoftShadows) {

@@ -16,8 +16,6 @@ bool before(const Crossing& a, const Crossing& b) noexcept {
   return a.geometry < b.geometry || (a.geometry == b.geometry && a.t < b.t);
 }
 
-bool isExactlyZero(const Double3& v) noexcept { return v.x == 0 && v.y == 0 && v.z == 0; }
-
 }  // namespace
 
 ShadowQuery::ShadowQuery(const Intersectable& shapes, const LitScene& scene, double cutOff)
@@ -45,7 +43,7 @@ Transmittance ShadowQuery::operator()(const Ray& ray, double tMin, double tMax,
         if (hit.t < tMin) return true;  // within ε of the origin: the surface itself
         ++result.crossings;
         const Double3& k = kT(hit.geometry);
-        bool cut = isExactlyZero(k);  // an opaque blocker: 0 in any order
+        bool cut = k.isExactlyZero();  // an opaque blocker: 0 in any order
         if (!cut && productOnlyFalls_) {
           partial = partial * k;
           cut = partial.lowerThan(stopBelow) || (partial * weight).lowerThan(stopBelow);

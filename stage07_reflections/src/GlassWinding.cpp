@@ -129,7 +129,7 @@ std::vector<WindingProblem> glassWindingProblems(const LitScene& scene) {
   std::map<std::uint32_t, std::vector<std::uint32_t>> facesByLook;
   for (std::uint32_t i = 0; i < shapes.size(); ++i) {
     const Material& m = scene.appearanceOf(i).material;
-    const bool refracts = m.ior != 1 && !(m.kT.x == 0 && m.kT.y == 0 && m.kT.z == 0);
+    const bool refracts = m.ior != 1 && !m.kT.isExactlyZero();
     const bool face =
         std::holds_alternative<Triangle>(shapes[i]) || std::holds_alternative<Polygon>(shapes[i]);
     if (refracts && face) facesByLook[scene.appearanceIndex[i]].push_back(i);

@@ -4,20 +4,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "primitives/Checks.h"
 #include "reflections/Optics.h"
 
 namespace rt {
 
 void WhittedSettings::validate() const {
-  if (maxLevel < 1 || maxLevel > MAX_LEVEL_LIMIT) {
-    throw std::invalid_argument("WhittedSettings: maxLevel must be between 1 and " +
-                                std::to_string(MAX_LEVEL_LIMIT) + ", got " +
-                                std::to_string(maxLevel));
-  }
-  if (!(std::isfinite(minK) && minK >= 0)) {
-    throw std::invalid_argument("WhittedSettings: minK must be a non-negative finite number, got " +
-                                formatNumber(minK));
-  }
+  requireBetween(maxLevel, 1, MAX_LEVEL_LIMIT, "WhittedSettings", "maxLevel");
+  requireNonNegative(minK, "WhittedSettings", "minK");
 }
 
 WhittedTracer::WhittedTracer(const LitScene& scene, const Intersectable* accelerator,
@@ -89,7 +83,7 @@ Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, Sec
   const Double3 kkx = k * kx;
   // The course's cut-off (all three channels below minK); a zero weight is never cast, also
   // when minK is 0.
-  if (kkx.lowerThan(settings_.minK) || (kkx.x == 0 && kkx.y == 0 && kkx.z == 0)) {
+  if (kkx.lowerThan(settings_.minK) || kkx.isExactlyZero()) {
     return Color::BLACK;
   }
   // kx is a product of validated, non-negative coefficients: no check per ray.

@@ -23,20 +23,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::hasTracer;
 using test::Outcome;
 using test::run;
+using test::writeText;
 
+/// A fresh directory for one test of this file: cli-test-output/cut-NAME.
 std::string freshDirectory(const std::string& name) {
-  const fs::path dir = fs::path("cli-test-output") / ("cut-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
+  return test::freshTestDirectory("cut-" + name);
 }
-
-void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
-/// True when this build has the stage that adds the tracer (a tracer of the course).
-bool has(std::string_view tracer) { return missingTracerStage(tracer).empty(); }
 
 TEST(CutTests, theTracersAreThoseOfTheStagesPresent) {
   // TC01: rt's tracers are the scene format's, in the same order, and begin with stage 4's
@@ -54,7 +49,7 @@ TEST(CutTests, theTracersAreThoseOfTheStagesPresent) {
   // accepted (the whole course has every tracer)
   const Outcome beams = run({"render", "two-color", "--tracer", "beams", "--width", "4", "-o",
                              freshDirectory("beams") + "/x.png", "--silent"});
-  if (has("beams")) {
+  if (hasTracer("beams")) {
     EXPECT_EQ(0, beams.code) << beams.err;
   } else {
     EXPECT_EQ(2, beams.code);
@@ -78,7 +73,7 @@ TEST(CutTests, listShowsTheScenesOfTheStagesPresent) {
     EXPECT_EQ(1u, tracers.count(s.tracer)) << s.name << " needs " << s.tracer;
   }
   // TC02: the galaxy only with mini project 1
-  EXPECT_EQ(has("beams"), r.out.find("galaxy  ") != std::string::npos);
+  EXPECT_EQ(hasTracer("beams"), r.out.find("galaxy  ") != std::string::npos);
 }
 
 TEST(CutTests, rendersAndExportsInEveryCut) {
@@ -112,7 +107,7 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   // TC01: lights (stage 5)
   writeText(dir + "/lights.json", "{" + camera + ",\n \"lights\": []}");
   const Outcome lights = run({"render", dir + "/lights.json", "-o", dir + "/l.png", "--silent"});
-  if (has("phong")) {
+  if (hasTracer("phong")) {
     EXPECT_EQ(0, lights.code) << lights.err;
   } else {
     EXPECT_EQ(2, lights.code);
@@ -123,7 +118,7 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   // TC02: render.maxLevel (stage 7)
   writeText(dir + "/level.json", "{" + camera + ",\n \"render\": {\"maxLevel\": 3}}");
   const Outcome level = run({"render", dir + "/level.json", "-o", dir + "/m.png", "--silent"});
-  if (has("whitted")) {
+  if (hasTracer("whitted")) {
     EXPECT_EQ(0, level.code) << level.err;
   } else {
     EXPECT_EQ(2, level.code);

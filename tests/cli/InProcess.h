@@ -1,7 +1,8 @@
 #pragma once
 // Runs `rt` in the test's own process (rt::cli::runRt: the executable's code without the process)
-// and captures its exit code and both streams; a fresh directory for a test's files under the
-// build tree's cli-test-output/. The tests of every course cut and of the whole course share it.
+// and captures its exit code and both streams (and, from TestFiles.h, a fresh directory for a
+// test's files under the build tree's cli-test-output/). The tests of every course cut and of the
+// whole course share it.
 
 #include <atomic>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "TestFiles.h"
 #include "cli/Commands.h"
 
 namespace rt::cli::test {
@@ -23,14 +25,6 @@ inline Outcome run(const std::vector<std::string>& args, const std::atomic<bool>
   std::ostringstream out, err;
   const int code = runRt(args, Io{out, err, false, stop});
   return {code, out.str(), err.str()};
-}
-
-/// cli-test-output/NAME, emptied (relative: the messages that quote it stay short).
-inline std::string freshTestDirectory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path("cli-test-output") / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
 }
 
 /// text's lines, without their line breaks.

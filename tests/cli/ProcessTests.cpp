@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "RtProcess.h"
+#include "TestFiles.h"
 #include "camera/ImageWriter.h"
 #include "cli/BuiltinScenes.h"
 #include "lighting/CourseScenes.h"
@@ -26,10 +27,7 @@ namespace {
 using test::freshDirectory;
 using test::readFile;
 using test::runRt;
-
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+using test::writeText;
 
 // ---------------------------------------------------------------------------------------------
 // render

@@ -14,6 +14,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "TestFiles.h"
+
 #ifndef RT_EXE
 #error "RT_EXE must name the rt executable"
 #endif
@@ -133,10 +135,7 @@ std::string readFile(const std::string& path) {
 }
 
 std::string freshDirectory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::absolute("cli-test-output") / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
+  return std::filesystem::absolute(freshTestDirectory(name)).string();
 }
 
 }  // namespace rt::cli::test

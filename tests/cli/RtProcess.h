@@ -48,7 +48,8 @@ class RtChild {
 /// The file's bytes, or "" when it does not exist.
 std::string readFile(const std::string& path);
 
-/// A fresh, empty directory for one test, under the build tree's cli-test-output/.
+/// A fresh, empty directory for one test, under the build tree's cli-test-output/: the absolute
+/// path of freshTestDirectory(name) (TestFiles.h), for a child run in another directory.
 std::string freshDirectory(const std::string& name);
 
 }  // namespace rt::cli::test

@@ -17,16 +17,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using test::hasTracer;
 using test::Outcome;
 using test::run;
-
-std::string writeText(const std::string& path, const std::string& text) {
-  std::ofstream(path) << text;
-  return path;
-}
-
-/// True when this build has the stage that adds the tracer.
-bool has(std::string_view tracer) { return missingTracerStage(tracer).empty(); }
+using test::writeText;
 
 /// A sphere seen by a 4 x 4 camera, with the ambient light and render object given.
 std::string sphereScene(const std::string& ambient, const std::string& render = "{}") {
@@ -47,11 +41,11 @@ std::string ambientWarning(const std::string& chosenBy) {
                            ") shows the ambient light wherever a ray hits a shape, and this "
                            "scene's ambient light is zero (ambient.color x ambient.kA): every "
                            "shape will be black; give the scene an ambient light";
-  if (has("beams"))
+  if (hasTracer("beams"))
     return head +
            ", or render with a tracer that shows its lights (phong, shadow, whitted, "
            "beams)\n";
-  if (!has("phong")) return head + "\n";
+  if (!hasTracer("phong")) return head + "\n";
   return head;  // a cut between: the tracers it has follow
 }
 
@@ -91,7 +85,7 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err, "");
   // TC07: another tracer (from stage 5 on) shows the lights: no warning
-  if (has("phong")) {
+  if (hasTracer("phong")) {
     r = run({"render", dark, "--tracer", "phong", "-o", dir + "/f.png"});
     EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
   }
@@ -105,7 +99,7 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
 }
 
 TEST(SceneWarningTests, glassFacesWoundBothWays) {
-  if (!has("phong")) GTEST_SKIP() << "a cut before stage05_lighting has no materials";
+  if (!hasTracer("phong")) GTEST_SKIP() << "a cut before stage05_lighting has no materials";
   const std::string dir = test::freshTestDirectory("warnings-winding");
   // Two glass triangles sharing the edge (1,0,0)-(0,1,0) in the same direction.
   const std::string scene = writeText(
@@ -128,14 +122,14 @@ TEST(SceneWarningTests, glassFacesWoundBothWays) {
   // TC01: render prints it first (from stage 7 on: the check is refraction's)
   Outcome r = run({"render", scene, "-o", dir + "/s.png"});
   EXPECT_EQ(r.code, 0) << r.err;
-  if (has("whitted"))
+  if (hasTracer("whitted"))
     EXPECT_EQ(r.err.rfind(warning, 0), 0u) << r.err;
   else
     EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
   // TC02: so does probe, on stderr; its JSON alone is on stdout
   r = run({"probe", scene, "--pixel", "2,2"});
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.err, has("whitted") ? warning : "");
+  EXPECT_EQ(r.err, hasTracer("whitted") ? warning : "");
   EXPECT_EQ(r.out.rfind("{", 0), 0u) << r.out;
 }
 

@@ -91,5 +91,37 @@ TEST(NearestNameTests, didYouMean) {
   EXPECT_EQ(didYouMean("spotlight", Names{"point", "spot"}), "; did you mean 'spot'?");
 }
 
+TEST(NearestNameTests, joinNames) {
+  const Names three{"a", "bb", "c"};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: comma-separated by default; TC02: another separator
+  EXPECT_EQ(joinNames(three), "a, bb, c");
+  EXPECT_EQ(joinNames(three, " "), "a bb c");
+  // TC03: more names than listed: the rest counted
+  EXPECT_EQ(joinNames(three, ", ", 2), "a, bb and 1 more");
+  // =============== Boundary Values Tests ==================
+  // TC11: exactly as many names as listed: no count; TC12: no names, nothing
+  EXPECT_EQ(joinNames(three, ", ", 3), "a, bb, c");
+  EXPECT_EQ(joinNames(Names{}), "");
+}
+
+TEST(NearestNameTests, unknownNameMessage) {
+  const Names tracers{"rays", "phong", "shadows"};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a near name: suggested, then every known name
+  EXPECT_EQ(unknownNameMessage("tracer", "phog", tracers),
+            "unknown tracer 'phog'; did you mean 'phong'? (known: rays phong shadows)");
+  // TC02: no near name: only the known names
+  EXPECT_EQ(unknownNameMessage("tracer", "zzzz", tracers),
+            "unknown tracer 'zzzz' (known: rays phong shadows)");
+}
+
+TEST(NearestNameTests, needsStageMessage) {
+  // TC01: the kind of name, the name and the stage that would know it
+  EXPECT_EQ(needsStageMessage("key", "lights", "stage05_lighting"),
+            "the key 'lights' needs stage05_lighting, which this build does not include (a "
+            "course cut before it)");
+}
+
 }  // namespace
 }  // namespace rt

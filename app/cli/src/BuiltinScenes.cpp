@@ -31,8 +31,7 @@ SceneDocument makeBuiltinScene(const BuiltinScene& scene, std::span<const std::s
       throw UsageError("--param: the scene '" + scene.name + "' has no parameters, got '" + given +
                        "'");
     if (std::find(known.begin(), known.end(), name) == known.end()) {
-      std::string list;
-      for (std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      const std::string list = joinNames(known);
       throw UsageError("--param: the scene '" + scene.name + "' has no parameter '" + name + "'" +
                        didYouMean(name, known) + " (its parameters: " + list + ")");
     }

@@ -51,8 +51,7 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
       if (v.name == *arguments.view) chosen = &v;
     }
     if (!chosen) {
-      std::string known;
-      for (std::string_view n : names) known += (known.empty() ? "" : ", ") + std::string(n);
+      const std::string known = joinNames(names);
       throw UsageError("--view: the scene has no view '" + *arguments.view + "'" +
                        didYouMean(*arguments.view, names) + " (" +
                        (names.empty() ? std::string("it has none") : "its views: " + known) + ")");
@@ -114,7 +113,7 @@ std::vector<std::string> sceneWarnings(const SceneDocument& doc, const SceneArgu
   const Double3& ambient = scene.ambientLight.intensity().rgb();
   const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
   if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.size() == 0 ||
-      !(ambient.x == 0 && ambient.y == 0 && ambient.z == 0))
+      !ambient.isExactlyZero())
     return warnings;
   // The later stages' tracers, which show the lights (not the debugging views).
   std::string others;

@@ -20,14 +20,10 @@ const TracerKind* tracerNamed(std::string_view name) {
 
 std::string unknownTracerMessage(std::string_view name) {
   if (const std::string_view stage = missingTracerStage(name); !stage.empty())
-    return "the tracer '" + std::string(name) + "' needs " + std::string(stage) +
-           ", which this build does not include (a course cut before it)";
+    return needsStageMessage("tracer", name, stage);
   std::vector<std::string_view> names;
   for (const TracerKind& t : tracerKinds()) names.push_back(t.name);
-  std::string message =
-      "unknown tracer '" + std::string(name) + "'" + didYouMean(name, names) + " (known:";
-  for (std::string_view n : names) message += " " + std::string(n);
-  return message + ")";
+  return unknownNameMessage("tracer", name, names);
 }
 
 const TracerKind& findTracer(std::string_view name, std::string_view what) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
 #include <vector>
 
 namespace rt {
@@ -85,6 +86,29 @@ std::string_view nearestName(std::string_view word, std::span<const std::string_
 std::string didYouMean(std::string_view word, std::span<const std::string_view> known) {
   const std::string_view near = nearestName(word, known);
   return near.empty() ? std::string() : "; did you mean '" + std::string(near) + "'?";
+}
+
+std::string joinNames(std::span<const std::string_view> names, std::string_view separator,
+                      std::size_t most) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < most; ++i) {
+    if (i) out += separator;
+    out += names[i];
+  }
+  if (names.size() > most) out += " and " + std::to_string(names.size() - most) + " more";
+  return out;
+}
+
+std::string unknownNameMessage(std::string_view what, std::string_view word,
+                               std::span<const std::string_view> known) {
+  return "unknown " + std::string(what) + " '" + std::string(word) + "'" + didYouMean(word, known) +
+         " (known: " + joinNames(known, " ") + ")";
+}
+
+std::string needsStageMessage(std::string_view what, std::string_view name,
+                              std::string_view stage) {
+  return "the " + std::string(what) + " '" + std::string(name) + "' needs " + std::string(stage) +
+         ", which this build does not include (a course cut before it)";
 }
 
 }  // namespace rt

@@ -81,15 +81,10 @@ template <typename Target>
                                  const KeyTable<Target>& table,
                                  std::span<const std::string_view> names) {
   for (const AbsentKey& a : table.absent)
-    if (a.name == key)
-      member.failAtKey("the key '" + std::string(key) + "' needs " + std::string(a.stage) +
-                       ", which this build does not include (a course cut before it)");
-  std::string detail = "unknown key";
-  if (const std::string_view near = nearestName(key, names); !near.empty())
-    detail += "; did you mean '" + std::string(near) + "'?";
-  else
-    detail += "; expected one of: " + joinNames(names);
-  member.failAtKey(detail);
+    if (a.name == key) member.failAtKey(needsStageMessage("key", key, a.stage));
+  const std::string near = didYouMean(key, names);
+  member.failAtKey("unknown key" +
+                   (near.empty() ? "; expected one of: " + joinNames(names) : near));
 }
 
 /// Reads node (an object) into target with table; keys in also are accepted and skipped (the

@@ -1,6 +1,7 @@
 #include "Readers.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -17,6 +18,17 @@ bool isArrayOf(const Node& n, std::size_t size) {
 
 /// Names listed in a message: at most this many, then "and N more".
 constexpr std::size_t LISTED_NAMES = 12;
+
+/// The N elements of n, an array of exactly N, each read by readOne, in order; otherwise
+/// "expected WHAT".
+template <typename T, std::size_t N, typename Read>
+std::array<T, N> readArray(const Node& n, std::string_view what, Read readOne) {
+  if (!isArrayOf(n, N)) n.expected(what);
+  std::array<T, N> values{};
+  std::size_t i = 0;
+  n.forEachElement([&](const Node& e) { values[i++] = readOne(e); });
+  return values;
+}
 
 }  // namespace
 
@@ -66,18 +78,12 @@ bool readBoolean(const Node& n) {
 }
 
 Point readPoint(const Node& n) {
-  if (!isArrayOf(n, 3)) n.expected("a point [x,y,z]");
-  double xyz[3];
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { xyz[i++] = readNumber(e); });
+  const auto xyz = readArray<double, 3>(n, "a point [x,y,z]", readNumber);
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 
 Vector readDirection(const Node& n) {
-  if (!isArrayOf(n, 3)) n.expected("a vector [x,y,z]");
-  double xyz[3];
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { xyz[i++] = readNumber(e); });
+  const auto xyz = readArray<double, 3>(n, "a vector [x,y,z]", readNumber);
   const Double3 d(xyz[0], xyz[1], xyz[2]);
   // The course's rule: a vector whose components are all zero (below 2^-40) cannot exist.
   if (d.isZero()) n.expected("a non-zero vector [x,y,z]");
@@ -88,19 +94,13 @@ Vector readDirection(const Node& n) {
 }
 
 Color readColor(const Node& n) {
-  if (!isArrayOf(n, 3)) n.expected("a colour [r,g,b]");
-  double rgb[3];
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { rgb[i++] = readNonNegative(e); });
+  const auto rgb = readArray<double, 3>(n, "a colour [r,g,b]", readNonNegative);
   return Color(rgb[0], rgb[1], rgb[2]);
 }
 
 Double3 readCoefficient(const Node& n) {
   if (n.json().is_number()) return Double3(readNonNegative(n));
-  if (!isArrayOf(n, 3)) n.expected("a coefficient (a number or [r,g,b])");
-  double k[3];
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { k[i++] = readNonNegative(e); });
+  const auto k = readArray<double, 3>(n, "a coefficient (a number or [r,g,b])", readNonNegative);
   return Double3(k[0], k[1], k[2]);
 }
 
@@ -119,19 +119,12 @@ std::vector<Point> readPoints(const Node& n, std::size_t minCount, std::size_t m
 }
 
 std::array<double, 2> readPositivePair(const Node& n) {
-  if (!isArrayOf(n, 2)) n.expected("two positive numbers [width,height]");
-  std::array<double, 2> pair{};
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { pair[i++] = readPositive(e); });
-  return pair;
+  return readArray<double, 2>(n, "two positive numbers [width,height]", readPositive);
 }
 
 std::array<int, 2> readIntegerPair(const Node& n, int lo, int hi) {
-  if (!isArrayOf(n, 2)) n.expected("two integers [nX,nY]");
-  std::array<int, 2> pair{};
-  std::size_t i = 0;
-  n.forEachElement([&](const Node& e) { pair[i++] = readInteger(e, lo, hi); });
-  return pair;
+  return readArray<int, 2>(n, "two integers [nX,nY]",
+                           [lo, hi](const Node& e) { return readInteger(e, lo, hi); });
 }
 
 std::string readChoice(const Node& n, std::string_view what,
@@ -144,14 +137,7 @@ std::string readChoice(const Node& n, std::string_view what,
 }
 
 std::string joinNames(std::span<const std::string_view> names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size() && i < LISTED_NAMES; ++i) {
-    if (i) out += ", ";
-    out += names[i];
-  }
-  if (names.size() > LISTED_NAMES)
-    out += " and " + std::to_string(names.size() - LISTED_NAMES) + " more";
-  return out;
+  return rt::joinNames(names, ", ", LISTED_NAMES);
 }
 
 }  // namespace rt::scenefile

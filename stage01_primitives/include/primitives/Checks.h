@@ -18,6 +18,17 @@ namespace rt {
 ///         got <value>" otherwise (NaN, infinity, zero and negative numbers).
 double requirePositive(double value, std::string_view operation, std::string_view argument);
 
+/// @returns value when it is a finite number >= 0.
+/// @throws std::invalid_argument "<operation>: <argument> must be a non-negative finite number,
+///         got <value>" otherwise (NaN, infinity and negative numbers).
+double requireNonNegative(double value, std::string_view operation, std::string_view argument);
+
+/// @returns value when lo <= value <= hi (a count, a grid size, a depth).
+/// @throws std::invalid_argument "<operation>: <argument> must be between <lo> and <hi>, got
+///         <value>" otherwise.
+long requireBetween(long value, long lo, long hi, std::string_view operation,
+                    std::string_view argument);
+
 /// @returns value when all three components are finite.
 /// @throws std::invalid_argument "<operation>: <argument> must be finite, got (x,y,z)" for a
 ///         component that is infinite or NaN (including one that overflowed while the value was

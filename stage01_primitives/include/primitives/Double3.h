@@ -33,6 +33,9 @@ struct Double3 {
   constexpr bool lowerThan(double k) const { return x < k && y < k && z < k; }
   /// True when every component isZero.
   bool isZero() const;
+  /// True when every component is exactly 0 (or −0): the test for "nothing passes" (a zero
+  /// coefficient, a zero weight, a zero direction), where isZero's threshold would be wrong.
+  constexpr bool isExactlyZero() const noexcept { return x == 0 && y == 0 && z == 0; }
   /// True when all three components are finite numbers.
   bool isFinite() const;
 

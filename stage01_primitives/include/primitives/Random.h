@@ -107,4 +107,11 @@ inline Sample2 jitteredCell(int i, int j, int n, RandomStream& r) noexcept {
 /// point (u, v) of the disk x² + y² <= 1.
 Sample2 squareToDisk(const Sample2& s) noexcept;
 
+/// Point k of n evenly spread points of the unit disk, shifted by `shift`: the golden-ratio
+/// lattice of the unit square, ((k + ½)/n, k·φ⁻¹) with φ⁻¹ = (√5 − 1)/2, moved by `shift` modulo 1
+/// (a Cranley–Patterson rotation, so that each set of n points is a random one and their mean is
+/// unbiased), then squareToDisk. One shift per set: a light's disk for a shadow beam, a lens for
+/// a pixel's cell. k in [0, n), n >= 1, shift in [0, 1)² (not checked: per-sample code).
+Sample2 diskLatticePoint(int k, int n, const Sample2& shift) noexcept;
+
 }  // namespace rt

@@ -18,12 +18,13 @@ struct DirectionalLight {
   DirectionalLight(const Color& i, const Vector& d) : intensity(i), direction(d.normalized()) {}
 };
 
-/// A point light with attenuation I0 / (kC + kL·d + kQ·d²).
+/// The data of a point light with attenuation I0 / (kC + kL·d + kQ·d²); PointLight below adds
+/// the course's setters.
 ///
 /// radius and shadowSamples are plain data here, used by the first mini project's soft shadows:
 /// a light of radius r > 0 is a disk sampled by that many shadow rays (see
 /// mini1_glossy/README.md). The default, radius 0 and one sample, is the course's point light.
-struct PointLight {
+struct PointLightFields {
   /// The most shadow rays one light may cast per shaded point.
   static constexpr int MAX_SHADOW_SAMPLES = 4096;
 
@@ -32,58 +33,45 @@ struct PointLight {
   double kC = 1, kL = 0, kQ = 0;
   double radius = 0;      ///< >= 0; 0: a point
   int shadowSamples = 1;  ///< 1..MAX_SHADOW_SAMPLES
-  PointLight(const Color& i, const Point& p) : intensity(i), position(p) {}
-  PointLight& setKc(double v) {
-    kC = v;
-    return *this;
+  PointLightFields(const Color& i, const Point& p) : intensity(i), position(p) {}
+};
+
+/// The course's builder-style setters of a point light's fields, written once for the point
+/// light and the spot light: each returns the light being built as its own type Self (the
+/// course's SpotLight overrides every setter to return a SpotLight), so that
+/// SpotLight(...).setKl(0.001).setNarrowBeam(10) keeps the chain a SpotLight. Base holds the
+/// fields (PointLightFields, or PointLight for the spot light, which is a point light).
+template <class Self, class Base>
+struct PointLightSetters : Base {
+  using Base::Base;
+  Self& setKc(double v) { return set(this->kC, v); }
+  Self& setKl(double v) { return set(this->kL, v); }
+  Self& setKq(double v) { return set(this->kQ, v); }
+  Self& setRadius(double r) { return set(this->radius, r); }
+  Self& setShadowSamples(int n) { return set(this->shadowSamples, n); }
+
+ private:
+  template <typename T>
+  Self& set(T& field, T value) {
+    field = value;
+    return static_cast<Self&>(*this);
   }
-  PointLight& setKl(double v) {
-    kL = v;
-    return *this;
-  }
-  PointLight& setKq(double v) {
-    kQ = v;
-    return *this;
-  }
-  PointLight& setRadius(double r) {
-    radius = r;
-    return *this;
-  }
-  PointLight& setShadowSamples(int n) {
-    shadowSamples = n;
-    return *this;
-  }
+};
+
+/// A point light with attenuation I0 / (kC + kL·d + kQ·d²) (fields: PointLightFields).
+struct PointLight : PointLightSetters<PointLight, PointLightFields> {
+  PointLight(const Color& i, const Point& p) : PointLightSetters(i, p) {}
 };
 
 /// A point light aimed along direction: the point light's intensity times
 /// max(0, direction·l)^narrowBeam (the seed's "focused spot light" for narrowBeam > 1).
-struct SpotLight : PointLight {
+struct SpotLight : PointLightSetters<SpotLight, PointLight> {
   Vector direction;  ///< stored normalised by the constructor
   double narrowBeam = 1;
   SpotLight(const Color& i, const Point& p, const Vector& d)
-      : PointLight(i, p), direction(d.normalized()) {}
-  SpotLight& setKc(double v) {
-    kC = v;
-    return *this;
-  }
-  SpotLight& setKl(double v) {
-    kL = v;
-    return *this;
-  }
-  SpotLight& setKq(double v) {
-    kQ = v;
-    return *this;
-  }
+      : PointLightSetters(i, p), direction(d.normalized()) {}
   SpotLight& setNarrowBeam(double v) {
     narrowBeam = v;
-    return *this;
-  }
-  SpotLight& setRadius(double r) {
-    radius = r;
-    return *this;
-  }
-  SpotLight& setShadowSamples(int n) {
-    shadowSamples = n;
     return *this;
   }
 };

@@ -38,10 +38,7 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
                 "A")
         ->check([](const std::string& name) -> std::string {
           if (isAccelerationName(name)) return "";
-          std::string known;
-          for (std::string_view n : ACCELERATION_NAMES) known += " " + std::string(n);
-          return "unknown acceleration '" + name + "'" + didYouMean(name, ACCELERATION_NAMES) +
-                 " (known:" + known + ")";
+          return unknownNameMessage("acceleration", name, ACCELERATION_NAMES);
         });
   });
 }

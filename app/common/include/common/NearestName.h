@@ -3,6 +3,8 @@
 /// The "did you mean" of every message about a misspelt name: `rt`'s commands, options, scenes
 /// and tracers, and a scene file's keys, types and material names. One rule for all of them.
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -28,5 +30,20 @@ std::string_view nearestName(std::string_view word, std::span<const std::string_
 
 /// "; did you mean 'NAME'?" for the nearest name, or "" when no name is near.
 std::string didYouMean(std::string_view word, std::span<const std::string_view> known);
+
+/// The names with separator between them ("a, b, c"); after the first `most` names,
+/// " and N more".
+std::string joinNames(std::span<const std::string_view> names, std::string_view separator = ", ",
+                      std::size_t most = SIZE_MAX);
+
+/// The message for a name that is not one of known: "unknown WHAT 'WORD'; did you mean 'NAME'?
+/// (known: a b c)", without the suggestion when no name is near ("unknown tracer 'phog'; did you
+/// mean 'phong'? (known: rays normals ...)").
+std::string unknownNameMessage(std::string_view what, std::string_view word,
+                               std::span<const std::string_view> known);
+
+/// The message for a name that a stage this build does not include would know: "the WHAT 'NAME'
+/// needs STAGE, which this build does not include (a course cut before it)".
+std::string needsStageMessage(std::string_view what, std::string_view name, std::string_view stage);
 
 }  // namespace rt

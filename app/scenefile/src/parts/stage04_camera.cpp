@@ -11,6 +11,7 @@
 #include "../Writers.h"
 #include "camera/Camera.h"
 #include "camera/Image.h"
+#include "common/NearestName.h"
 #include "primitives/Overloaded.h"
 #include "scenefile/SceneFile.h"
 
@@ -247,8 +248,7 @@ void attachRender(SceneFormat& format) {
     if (n.json().is_string()) {
       const std::string name = n.json().get<std::string>();
       if (const std::string_view stage = missingTracerStage(name); !stage.empty())
-        n.fail("the tracer '" + name + "' needs " + std::string(stage) +
-               ", which this build does not include (a course cut before it)");
+        n.fail(needsStageMessage("tracer", name, stage));
     }
     r.tracer = readChoice(n, "a tracer", sceneFormat().tracers());
   });

@@ -74,9 +74,7 @@ void readGeometryMaterial(const Node& n, GeometryFields& f) {
   if (it == named.materials.end()) {
     std::string detail =
         "expected the name of a material in \"materials\" (" + known + "), got " + n.describe();
-    if (const std::string_view near = nearestName(name, names); !near.empty())
-      detail += "; did you mean '" + std::string(near) + "'?";
-    n.fail(detail);
+    n.fail(detail + didYouMean(name, names));
   }
   look.material = it->second;
   look.materialName = name;
