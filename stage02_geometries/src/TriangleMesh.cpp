@@ -104,7 +104,7 @@ Vector TriangleMesh::shadingNormal(std::size_t t, double b1, double b2) const no
   const Indices& i = triangles_[t];
   const Double3 blend =
       normals_[i[0]].xyz() * (1 - b1 - b2) + normals_[i[1]].xyz() * b1 + normals_[i[2]].xyz() * b2;
-  if (blend.x == 0 && blend.y == 0 && blend.z == 0) return flatNormal(t);
+  if (blend.isExactlyZero()) return flatNormal(t);
   return Vector::unchecked(blend).normalized();
 }
 

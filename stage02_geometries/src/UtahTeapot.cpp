@@ -47,15 +47,13 @@ Sample evaluate(const std::array<Double3, 16>& cp, const Weights& u, const Weigh
   return s;
 }
 
-bool exactlyZero(const Double3& d) { return d.x == 0 && d.y == 0 && d.z == 0; }
-
 /// ∂P/∂u × ∂P/∂v, the normal's direction. Along an edge v = v0 collapsed to a point, ∂P/∂u is
 /// zero there and grows as (v - v0)·∂²P/∂u∂v inside the patch, so the normal's limit is the
 /// direction of ±∂²P/∂u∂v × ∂P/∂v, the sign that of v - v0 inside (+ at v0 = 0, - at v0 = 1);
 /// likewise for an edge u = u0.
 Double3 normalDirection(const Sample& s, double u, double v) {
-  if (exactlyZero(s.du)) return (v < 0.5 ? s.duv : -s.duv).cross(s.dv);
-  if (exactlyZero(s.dv)) return s.du.cross(u < 0.5 ? s.duv : -s.duv);
+  if (s.du.isExactlyZero()) return (v < 0.5 ? s.duv : -s.duv).cross(s.dv);
+  if (s.dv.isExactlyZero()) return s.du.cross(u < 0.5 ? s.duv : -s.duv);
   return s.du.cross(s.dv);
 }
 
