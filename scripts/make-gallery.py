@@ -23,7 +23,7 @@ The timing file, as `rt bench --json` writes it:
    "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh", "threads": N,
              "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
              "nodesPerRay": Y, "speedup": Z, "referenceSeconds": null or a number}]}
-  (the reference report's time for the row; the older name "seedSeconds" is read too).
+  (the reference report's time for the row).
 
 --root is the repository (default: this script's); the page's links, images and style sheet
 (docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
@@ -139,15 +139,9 @@ def figure(image: Path, page_dir: Path, caption: str) -> str:
 
 # ---- The timing chart --------------------------------------------------------------------------
 
-REFERENCE_KEYS = ("referenceSeconds", "seedSeconds")  # rt bench's name, and its older one
-
-
 def reference_seconds(row: dict) -> float | None:
     """The reference report's time for the row's render, or None."""
-    for key in REFERENCE_KEYS:
-        if row.get(key) is not None:
-            return row[key]
-    return None
+    return row.get("referenceSeconds")
 
 
 def read_bench(path: Path) -> dict:
@@ -170,13 +164,11 @@ def read_bench(path: Path) -> dict:
                 raise BadInput(f"{path}: rows[{i}].{key}: expected "
                                f"{'a number' if isinstance(kind, tuple) else kind.__name__}, "
                                f"got {value!r}")
-        for key in REFERENCE_KEYS:
-            value = row.get(key)
-            if value is not None and (not isinstance(value, (int, float)) or
-                                      isinstance(value, bool)):
-                raise BadInput(f"{path}: rows[{i}].{key}: expected null or a number, "
-                               f"got {value!r}")
-        for key in ("seconds", *REFERENCE_KEYS):
+        value = row.get("referenceSeconds")
+        if value is not None and (not isinstance(value, (int, float)) or isinstance(value, bool)):
+            raise BadInput(f"{path}: rows[{i}].referenceSeconds: expected null or a number, "
+                           f"got {value!r}")
+        for key in ("seconds", "referenceSeconds"):
             value = row.get(key)
             if value is not None and not (math.isfinite(value) and value >= 0):
                 raise BadInput(f"{path}: rows[{i}].{key}: expected a number >= 0, got {value!r}")

@@ -208,18 +208,6 @@ class GalleryTest(unittest.TestCase):
         # EP04: the table scrolls on its own on a narrow page
         self.assertIn('<div class="table"><table>', self.text)
 
-    def test_older_key(self) -> None:
-        # EP01: a timing file of rt bench before the rename ("seedSeconds") is read the same
-        old = self.tmp / "old.json"
-        old.write_text(BENCH.read_text(encoding="utf-8").replace('"referenceSeconds"',
-                                                                 '"seedSeconds"'),
-                       encoding="utf-8")
-        output = self.tmp / "old" / "index.html"
-        r = make_gallery("--root", self.root, "--bench", old, "-o", output)
-        self.assertEqual(r.returncode, 0, r.stderr)
-        self.assertEqual(Page(output.read_text(encoding="utf-8")).charts[0],
-                         self.page.charts[0])
-
     def test_significant_digits(self) -> None:
         # EP01..EP05: three significant digits without an exponent; rays per second with a unit
         spec = importlib.util.spec_from_file_location("make_gallery", SCRIPT)
@@ -365,7 +353,7 @@ def bench_labels(bench: Path) -> list[str]:
     """The labels the charts must show for a timing file: each row's name (a reference row's
     alone, another's with its tracer)."""
     rows = json.loads(bench.read_text(encoding="utf-8"))["rows"]
-    return [r["name"] if r.get("referenceSeconds", r.get("seedSeconds")) is not None
+    return [r["name"] if r.get("referenceSeconds") is not None
             else f'{r["name"]} ({r["tracer"]})' for r in rows]
 
 
