@@ -1,4 +1,4 @@
-// Mini project 1: the seed's galaxy in a glass box, generated from its parameters.
+// Mini project 1: the reference report's galaxy in a glass box, generated from its parameters.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,7 +33,7 @@ TEST(GalaxyTests, theSeedsLayout) {
   for (const LightSource& l : s.lights) EXPECT_TRUE(std::holds_alternative<SpotLight>(l));
   EXPECT_EQ(Color::BLACK, s.ambientLight.intensity());
   EXPECT_NO_THROW(s.validate());
-  // TC03: the seed's camera, and the views (main is the seed's)
+  // TC03: the reference report's camera, and the views (main is the reference report's)
   EXPECT_EQ(Point(100, 27, 22), g.camera.location);
   EXPECT_EQ(1280, g.camera.nX);
   EXPECT_EQ(720, g.camera.nY);
@@ -46,7 +46,7 @@ TEST(GalaxyTests, theSeedsLayout) {
     EXPECT_NO_THROW((void)v.camera.builder().build()) << v.name;
   }
   EXPECT_EQ((std::set<std::string>{"main", "above", "inside", "side"}), names);
-  // TC04: the glass blurs both secondary rays with the seed's beam (N 10, distance 12, radius
+  // TC04: the glass blurs both secondary rays with the reference report's beam (N 10, distance 12, radius
   // 0.2): exactly one row of the table has beams
   int blurred = 0;
   for (const Appearance& a : s.appearances)
@@ -62,7 +62,7 @@ TEST(GalaxyTests, theSeedsLayout) {
 TEST(GalaxyTests, everyStarIsWithinTheSpiralsReach) {
   // TC01: every sphere is within the outermost arm's radius of the galaxy's centre (4,8,4):
   // 1.7·e^(0.25·0.15·49) plus the largest jitter in the disc (0.2·⌊49/8⌋/2 = 0.6 in x and in z)
-  // and off it (0.1), plus its own radius; and above the pedestal (y > 4). (As in the seed, the
+  // and off it (0.1), plus its own radius; and above the pedestal (y > 4). (As in the Java course project, the
   // outermost stars of the arms pointing to −x reach a little past the glass wall at x = −6.5:
   // the box is not centred on the galaxy in x.)
   const LitScene s = galaxy().scene;

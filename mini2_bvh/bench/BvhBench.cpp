@@ -171,7 +171,7 @@ void randomScenes(const std::vector<std::uint32_t>& sizes) {
 
 // ---- The course's "glassed galaxy" (mini1's galaxy(), course-catalogue.md §6) ----
 
-/// The galaxy's shapes, of about `stars` stars (0: the seed's 50 per arm): the whole scene (the
+/// The galaxy's shapes, of about `stars` stars (0: the reference report's 50 per arm): the whole scene (the
 /// floor, the pedestal, the glass box and its frame, the stars), or its spheres alone, where
 /// every ray that meets no star crosses the whole galaxy.
 Geometries galaxyShapes(const GalaxySetup& g, bool whole) {
@@ -193,7 +193,7 @@ void galaxyScene(long stars, bool whole) {
   std::printf("\n%s: %u shapes, %u spheres; BVH built in %.2f ms, %zu nodes\n",
               whole ? "Galaxy, the whole scene" : "Galaxy, its spheres alone", scene.size(),
               spheres, 1e3 * (threadCpuSeconds() - buildStart), bvh.nodes().size());
-  // The seed's camera: from (100,27,22) at (4,8,4), 1280 x 720.
+  // The reference report's camera: from (100,27,22) at (4,8,4), 1280 x 720.
   const Camera camera = g.camera.builder().build();
   const int nX = camera.nX(), nY = camera.nY();
   std::vector<Ray> rays;

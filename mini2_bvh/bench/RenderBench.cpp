@@ -3,7 +3,7 @@
 //   build/release/bin/mini2_render_bench [--no-scaling] [--stars 1000,10000,100000,1000000]
 //                                        [--threads N] [--repeat R] [--tile S]
 //
-// 1. Thread scaling: the seed's galaxy (mini1's galaxy()) rendered by the beams tracer through the
+// 1. Thread scaling: the reference report's galaxy (mini1's galaxy()) rendered by the beams tracer through the
 //    BVH, one camera ray per pixel, on 1 thread and on N threads (default 2) alternately, R times
 //    each (default 5), so that both see the same load on a shared machine. It prints the medians
 //    of the wall time and of the rays per second (every ray: camera, reflected and refracted,
@@ -12,10 +12,10 @@
 //    and N threads when the threads do not slow each other down), and whether the two images
 //    are the same bits. Then the load balance, which the machine's load cannot blur: every
 //    tile's cost measured alone, and the pool's schedule replayed with them (tileBalance).
-//    Without diffusion at the seed's 1280 x 720; with it (the glass's beams of 10 x 10 rays) at
+//    Without diffusion at the reference report's 1280 x 720; with it (the glass's beams of 10 x 10 rays) at
 //    256 x 144.
 // 2. Stars: galaxies of n stars (GalaxyParams::stars), without diffusion, seen at 400 x 400 (the
-//    middle of the seed's view): the generation time of the scene and the build time and size of
+//    middle of the reference report's view): the generation time of the scene and the build time and size of
 //    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
 //    and N threads (medians of R renders, alternately), and the peak resident size of a process
 //    that did only that (each galaxy is measured in a child process of its own:
@@ -89,7 +89,7 @@ void tileBalance(const Camera& camera, const RayTracer& tracer, int threads) {
 
 void scaling(const char* name, bool diffusion, int nX, int nY, const BenchOptions& o) {
   const GalaxyRender g(GalaxyParams{.diffusion = diffusion});
-  const Camera camera = seedView(g.setup, nX, nY);
+  const Camera camera = referenceView(g.setup, nX, nY);
   const CenterSampler sampler;
   const TimedRenders c = timeRenders({camera, *g.tracer, sampler}, timing(o));
   const RayCounts& rays = c.rays[0];

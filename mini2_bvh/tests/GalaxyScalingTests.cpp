@@ -21,7 +21,7 @@ using ::testing::ThrowsMessage;
 
 TEST(GalaxyScalingTests, timeRendersComparesThreadCounts) {
   const GalaxyRender g(GalaxyParams{.stars = 1000, .diffusion = false});
-  const Camera camera = seedView(g.setup, 16, 16);
+  const Camera camera = referenceView(g.setup, 16, 16);
   const CenterSampler sampler;
   const RenderContext context{camera, *g.tracer, sampler};
   Image image(16, 16);

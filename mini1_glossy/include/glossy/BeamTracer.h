@@ -14,7 +14,7 @@ namespace rt {
 
 /// Where beams are cast.
 enum class BeamDepth {
-  FirstBounce,  ///< only from the primary hit (the seed's choice, and the default)
+  FirstBounce,  ///< only from the primary hit (the reference report's choice, and the default)
   EveryBounce,  ///< from every hit of the recursion
 };
 

@@ -3,8 +3,8 @@
 /// An orthonormal frame around any unit vector: what a beam's target circle and a light's disk
 /// are laid out in.
 ///
-/// The seed built it as nX = normalize(dir × Y), nY = dir × nX, with a special case for
-/// dir == +Y only: for dir == −Y the cross product is zero and the beam collapses. Duff et al.
+/// The Java course project built it as nX = normalize(dir × Y), nY = dir × nX, with a special case
+/// for dir == +Y only: for dir == −Y the cross product is zero and the beam collapses. Duff et al.
 /// ("Building an Orthonormal Basis, Revisited", JCGT 2017) give a frame that is continuous and
 /// exact for every unit w, without a branch on the direction: with s = sign(w.z) (+1 for 0),
 /// a = −1/(s + w.z), b = w.x·w.y·a,

@@ -1,10 +1,10 @@
 #pragma once
 /// @file Galaxy.h
-/// The seed's final image, "Glassed Galaxy": about a thousand glowing spheres on the spiral arms
-/// of a galaxy, floating in a diffused-glass box with a metallic frame on a two-level pedestal,
-/// lit by three coloured spot lights. Generated from the seed authors' parameters (the course
-/// catalogue, §6), with the star count as a parameter so the second mini project can scale it
-/// from 10^3 to 10^6 stars.
+/// The reference report's final image, "Glassed Galaxy": about a thousand glowing spheres on the
+/// spiral arms of a galaxy, floating in a diffused-glass box with a metallic frame on a two-level
+/// pedestal, lit by three coloured spot lights. Generated from the reference report's authors'
+/// parameters (the course catalogue, §6), with the star count as a parameter so the second mini
+/// project can scale it from 10^3 to 10^6 stars.
 
 #include <cstdint>
 #include <string>
@@ -22,9 +22,9 @@ struct GalaxyParams {
   static constexpr long MAX_STARS = 10'000'000;
 
   int arms = 21;           ///< spiral arms; every seventh from the fourth (4, 11, 18) holds suns
-  int perArm = 50;         ///< positions per arm (the seed's 50)
+  int perArm = 50;         ///< positions per arm (the reference report's 50)
   long stars = 0;          ///< when > 0: about this many stars, by setting perArm = stars / arms
-  bool diffusion = true;   ///< the glass box's beams (the seed's diffused glass)
+  bool diffusion = true;   ///< the glass box's beams (the reference report's diffused glass)
   std::uint64_t seed = 1;  ///< the generator's jitter and star colours
 
   /// @throws std::invalid_argument for arms outside 1..MAX_ARMS, perArm outside 1..MAX_PER_ARM,
@@ -37,14 +37,14 @@ struct GalaxyParams {
 
 struct GalaxySetup {
   LitScene scene;
-  CameraSpec camera;  ///< the seed's view: from (100,27,22) at (4,8,4), 1280 x 720
-  /// Points of view of the same scene: "main" (the seed's, the same as camera), "above",
-  /// "inside" (through the glass, close to the stars) and "side".
+  CameraSpec camera;  ///< the reference report's view: from (100,27,22) at (4,8,4), 1280 x 720
+  /// Points of view of the same scene: "main" (the reference report's, the same as camera),
+  /// "above", "inside" (through the glass, close to the stars) and "side".
   std::vector<NamedView> views;
 };
 
 /*
- * The layout, in the seed's units (y is up):
+ * The layout, in the reference report's units (y is up):
  *
  *   floor           the plane y = 0, emission (30,40,70), kD 1
  *   pedestal        two boxes, x∈[−7,19] y∈[2,4] z∈[−7,15] on x∈[−7.5,19.5] y∈[0,2]
@@ -69,8 +69,8 @@ struct GalaxySetup {
  *                   (0,30,−20) along (0,−3,1.8)
  *   camera          from (100,27,22) at (4,8,4), up +Y, view plane 384 x 216 at 750, 1280 x 720
  *
- * The seed's Math.random is replaced by the counter-based RandomStream(seed, arm, position, 0),
- * so a galaxy is a pure function of its parameters.
+ * The reference report's Math.random is replaced by the counter-based RandomStream(seed, arm,
+ * position, 0), so a galaxy is a pure function of its parameters.
  */
 /// @throws std::invalid_argument for invalid parameters.
 GalaxySetup galaxy(const GalaxyParams& params = {});

@@ -1,6 +1,7 @@
 #pragma once
 /// @file RayBeam.h
-/// A beam of rays around one secondary ray: the seed's generateRayBeam, with its flaws fixed.
+/// A beam of rays around one secondary ray: the reference report's generateRayBeam, with its flaws
+/// fixed.
 ///
 ///                      target circle, radius r, at distance d along the main ray
 ///                     ___________
@@ -18,10 +19,10 @@
 /// reflections never dip into the surface and diffused refraction never comes back out. The
 /// colour of the beam is the average of the colours its rays see.
 ///
-/// Fixed from the seed: the main ray is not traced twice (it is not added to the grid's rays;
-/// with N = 1 or r = 0 the beam is the main ray alone); the grid is cell-centred (the seed's
-/// started at −r, leaving the last row and column uncovered); the frame of the target plane
-/// works for every direction (see Frame.h; the seed's failed for −Y).
+/// Fixed from the Java course project: the main ray is not traced twice (it is not added to the
+/// grid's rays; with N = 1 or r = 0 the beam is the main ray alone); the grid is cell-centred (the
+/// reference report's started at −r, leaving the last row and column uncovered); the frame of the
+/// target plane works for every direction (see Frame.h; the reference report's failed for −Y).
 
 #include <cstdint>
 

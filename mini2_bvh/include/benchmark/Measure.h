@@ -1,9 +1,9 @@
 #pragma once
 /// @file Measure.h
 /// What the benchmarks measure with (mini2_render_bench, and `rt bench` in the command-line
-/// program): the CPU clocks, the median, the seed's galaxy ready to render with its generation
-/// and its BVH build timed, and a configuration's peak memory measured in a process of its own.
-/// A timing is never a test: these print figures, they assert nothing.
+/// program): the CPU clocks, the median, the reference report's galaxy ready to render with its
+/// generation and its BVH build timed, and a configuration's peak memory measured in a process of
+/// its own. A timing is never a test: these print figures, they assert nothing.
 
 #include <atomic>
 #include <cstddef>
@@ -49,10 +49,10 @@ struct GalaxyRender {
   GalaxyRender& operator=(const GalaxyRender&) = delete;
 };
 
-/// The seed's view of g at nX x nY pixels; an image of another shape than the seed's 16:9 shows
-/// the middle of it (the view plane cut to the image's shape, so that pixels stay square): a
-/// square image shows the galaxy's middle, where the stars are.
-Camera seedView(const GalaxySetup& g, int nX, int nY);
+/// The reference report's view of g at nX x nY pixels; an image of another shape than the reference
+/// report's 16:9 shows the middle of it (the view plane cut to the image's shape, so that pixels
+/// stay square): a square image shows the galaxy's middle, where the stars are.
+Camera referenceView(const GalaxySetup& g, int nX, int nY);
 
 /// What work in a child process returned, and the child's peak resident size.
 template <typename T>

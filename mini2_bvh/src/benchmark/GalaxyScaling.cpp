@@ -66,7 +66,7 @@ std::optional<GalaxyMeasurement> measureGalaxy(long stars, int nX, int nY,
   const auto measured = measureInChildProcess<GalaxyMeasurement>(
       [stars, nX, nY, &options] {
         const GalaxyRender g(GalaxyParams{.stars = stars, .diffusion = false});
-        const Camera camera = seedView(g.setup, nX, nY);
+        const Camera camera = referenceView(g.setup, nX, nY);
         const CenterSampler sampler;
         return GalaxyMeasurement{.shapes = g.setup.scene.geometries.size(),
                                  .generateSeconds = g.generateSeconds,

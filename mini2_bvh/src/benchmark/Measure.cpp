@@ -104,7 +104,7 @@ GalaxyRender::GalaxyRender(const GalaxyParams& params) {
   tracer = std::make_unique<BeamTracer>(setup.scene, bvh.get());
 }
 
-Camera seedView(const GalaxySetup& g, int nX, int nY) {
+Camera referenceView(const GalaxySetup& g, int nX, int nY) {
   CameraSpec spec = g.camera;
   if (nX * spec.vpHeight < nY * spec.vpWidth)
     spec.vpWidth = spec.vpHeight * nX / nY;

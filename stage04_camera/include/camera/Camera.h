@@ -90,7 +90,7 @@ class Camera {
   const Image& image() const { return image_; }
   Image& image() { return image_; }
 
-  // Transformations (the seed's stage-4 bonus). Each keeps the frame orthonormal.
+  // Transformations (a bonus of the Java course's camera stage). Each keeps the frame orthonormal.
   /// Moves the location by offset; the orientation is unchanged.
   Camera& move(const Vector& offset);
   /// Rotates vUp and vRight around vTo by angleDegrees (counter-clockwise as seen from behind

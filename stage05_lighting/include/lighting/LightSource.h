@@ -64,7 +64,7 @@ struct PointLight : PointLightSetters<PointLight, PointLightFields> {
 };
 
 /// A point light aimed along direction: the point light's intensity times
-/// max(0, direction·l)^narrowBeam (the seed's "focused spot light" for narrowBeam > 1).
+/// max(0, direction·l)^narrowBeam (the reference report's "focused spot light" for narrowBeam > 1).
 struct SpotLight : PointLightSetters<SpotLight, PointLight> {
   Vector direction;  ///< stored normalised by the constructor
   double narrowBeam = 1;

@@ -3,8 +3,8 @@
 /// What `rt` knows of each stage present in its build, registered by one part per stage
 /// (src/parts/<stage folder>.cpp, called by a source CMake generates from the stages built): the
 /// tracers, the built-in scenes, and how a render is sampled, accelerated and run. A course cut
-/// after stage 5 has the ambient and Phong tracers and the scenes of stages 4 and 5; nothing else
-/// exists in it, and there is no #if anywhere.
+/// after stage05_lighting has the ambient and Phong tracers and the scenes of stage04_camera and
+/// stage05_lighting; nothing else exists in it, and there is no #if anywhere.
 ///
 /// Which part supplies what: the tracers, scenes, commands and options add up, every part its
 /// own. The three pieces a render has exactly one of are StagePieces, and the highest stage of

@@ -1,7 +1,7 @@
 // What rt knows of mini project 1: the beams tracer (glossy surfaces, diffused glass, soft
-// shadows), the samplers the render settings choose (jittered, lens, adaptive), and the seed's
-// galaxy in a glass box with its parameters and points of view, and the demonstration scenes of
-// glossy/DemoTable.h with their knobs as parameters (mini1_glossy/Knobs.h).
+// shadows), the samplers the render settings choose (jittered, lens, adaptive), and the reference
+// report's galaxy in a glass box with its parameters and points of view, and the demonstration
+// scenes of glossy/DemoTable.h with their knobs as parameters (mini1_glossy/Knobs.h).
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -60,7 +60,8 @@ void registerCli_mini1_glossy(CliRegistry& registry) {
        }});
   registry.scenes.push_back(
       {"galaxy",
-       "the seed's Glassed Galaxy: ~1000 glowing stars in a diffused-glass box (views: main, "
+       "the reference report's Glassed Galaxy: ~1000 glowing stars in a diffused-glass box (views: "
+       "main, "
        "above, inside, side)",
        "mini1_glossy",
        "beams",
