@@ -63,15 +63,15 @@ class Grid final : public Intersectable {
   /// A shape's box is widened by this fraction of a cell's width on every side before it is
   /// listed in the cells it touches (the file comment says why).
   static constexpr double CELL_MARGIN = 0x1p-20;
-  /// The most bounded shapes: an entry holds the shape's index in its low 26 bits, its six face
-  /// bits above.
+  /// The bound on a bounded shape's index: an entry holds the index in its low 26 bits, its six
+  /// face bits above.
   static constexpr std::uint32_t MAX_SHAPES = 1u << 26;
 
   /// Builds the grid.
   /// @param shapes viewed, not copied (as by a std::span): they must outlive the Grid and stay
   ///        unchanged. Hit indices are indices into shapes.
-  /// @throws std::length_error when more than MAX_SHAPES shapes are bounded, or the entries
-  ///         outnumber 2^32.
+  /// @throws std::length_error when a bounded shape's index is MAX_SHAPES or more, or the
+  ///         entries outnumber 2^32.
   explicit Grid(std::span<const Geometry> shapes);
   explicit Grid(const Geometries& geometries) : Grid(geometries.shapes()) {}
   Grid(Geometries&&) = delete;  // would view a temporary

@@ -79,9 +79,10 @@ Grid::Grid(std::span<const Geometry> shapes) : shapes_(shapes) {
     box_.expand(boxes.back());
   }
   if (bounded.empty()) return;
-  if (bounded.size() > MAX_SHAPES)
-    throw std::length_error("Grid: " + std::to_string(bounded.size()) +
-                            " bounded shapes, more than the grid's " + std::to_string(MAX_SHAPES));
+  if (bounded.back() >= MAX_SHAPES)
+    throw std::length_error("Grid: bounded shape " + std::to_string(bounded.back()) +
+                            " of the scene's " + std::to_string(shapes.size()) +
+                            ": an entry holds indices below " + std::to_string(MAX_SHAPES));
 
   n_ = resolutionFor(box_.extent(), bounded.size());
   for (int a = 0; a < 3; ++a) {
