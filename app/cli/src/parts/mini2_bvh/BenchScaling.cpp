@@ -80,7 +80,7 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
                               std::to_string(stars.size()) + " (" + std::to_string(n) + " stars)";
     io.err << "rt bench: galaxy " << i + 1 << "/" << stars.size() << ": " << n << " stars, " << nX
            << "x" << nY << ", " << threadsText(threads) << std::endl;
-    ScalingRow row{.stars = n};
+    ScalingRow row{.stars = n, .shapes = 0, .bvh = {}, .grid = {}};
     for (const GalaxyAccel accel : {GalaxyAccel::Bvh, GalaxyAccel::Grid}) {
       const std::optional<GalaxyMeasurement> m = measureGalaxy(
           n, nX, nY, {.threads = {threads}, .repeat = args.repeat, .stop = io.stop}, accel);
