@@ -127,8 +127,8 @@ void stars(const std::vector<long>& sizes, const BenchOptions& o) {
     const TimedRenders& c = r.renders;
     std::printf("%8ld %8llu %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
                 static_cast<unsigned long long>(r.shapes), r.generateSeconds, r.buildSeconds,
-                static_cast<double>(r.bvhBytes) / 1e6, c.cpu[0], c.wall[0], c.wall[1], c.speedUp(),
-                static_cast<unsigned long long>(c.rays[0].total()),
+                static_cast<double>(r.structureBytes) / 1e6, c.cpu[0], c.wall[0], c.wall[1],
+                c.speedUp(), static_cast<unsigned long long>(c.rays[0].total()),
                 static_cast<double>(r.peakBytes) / (1024.0 * 1024.0),
                 c.sameImage ? "" : "  DIFFERENT IMAGES");
     std::fflush(stdout);

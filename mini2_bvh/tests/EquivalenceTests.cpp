@@ -1,7 +1,7 @@
-// mini2: the CBR and the BVH answer exactly as the linear Geometries over the same shapes:
-// closestHit returns the same t (compared with ==) and the same index, forEachHit visits the
-// same multiset of (t, index) hits and stops when told. Random scenes and rays with fixed seeds;
-// each query is also repeated with tMax exactly at its closest hit (the inclusive bound) and
+// mini2: the CBR, the BVH and the grid answer exactly as the linear Geometries over the same
+// shapes: closestHit returns the same t (compared with ==) and the same index, forEachHit visits
+// the same multiset of (t, index) hits and stops when told. Random scenes and rays with fixed
+// seeds; each query is also repeated with tMax exactly at its closest hit (the inclusive bound) and
 // relaunched from that hit point.
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "grid/Grid.h"
 
 #include "RandomScenes.h"
 
@@ -72,19 +73,24 @@ std::string describe(const std::optional<Hit>& hit) {
   return ::testing::AssertionSuccess();
 }
 
-/// Every query, with its two derived queries, on the CBR and the BVH of the scene. Reports the
-/// first few differences and returns how many queries were checked.
+/// Every query, with its two derived queries, on the CBR, the BVH and the grid of the scene.
+/// Reports the first few differences and returns how many queries were checked.
 int expectEquivalent(const Geometries& scene, const std::vector<Query>& queries, Random& random) {
   const Cbr cbr(scene);
   const Bvh bvh(scene);
+  const Grid grid(scene);
   int checked = 0, failures = 0;
   auto check = [&](const Ray& ray, double tMax) {
     const auto stopAfter = static_cast<std::uint32_t>(random.integer(1, 4));
     for (const Intersectable* fast :
-         {static_cast<const Intersectable*>(&cbr), static_cast<const Intersectable*>(&bvh)}) {
+         {static_cast<const Intersectable*>(&cbr), static_cast<const Intersectable*>(&bvh),
+          static_cast<const Intersectable*>(&grid)}) {
       const ::testing::AssertionResult result = sameAnswers(scene, *fast, ray, tMax, stopAfter);
       if (!result && ++failures <= 5)
-        ADD_FAILURE() << (fast == &bvh ? "Bvh " : "Cbr ") << result.message();
+        ADD_FAILURE() << (fast == &bvh    ? "Bvh "
+                          : fast == &grid ? "Grid "
+                                          : "Cbr ")
+                      << result.message();
     }
     ++checked;
   };

@@ -66,14 +66,23 @@ TEST(GalaxyScalingTests, measureGalaxyInAProcessOfItsOwn) {
   const std::optional<GalaxyMeasurement> m = measureGalaxy(1000, 8, 8, {.threads = {1}});
   ASSERT_TRUE(m.has_value());
   EXPECT_EQ(m->shapes, 1065u);
-  EXPECT_GT(m->bvhBytes, 0u);
+  EXPECT_GT(m->structureBytes, 0u);
   EXPECT_GT(m->peakBytes, 0);
   EXPECT_EQ(m->renders.counts, 1);
   EXPECT_EQ(m->renders.rays[0].primary, 64u);
-  // TC02: the child's exception, with its message
+  // TC02: through the grid: the same shapes and rays, the grid's memory
+  const std::optional<GalaxyMeasurement> g =
+      measureGalaxy(1000, 8, 8, {.threads = {1}}, GalaxyAccel::Grid);
+  ASSERT_TRUE(g.has_value());
+  EXPECT_EQ(g->shapes, 1065u);
+  EXPECT_GT(g->structureBytes, 0u);
+  EXPECT_EQ(g->renders.rays[0].primary, 64u);
+  EXPECT_EQ(g->renders.rays[0].secondary, m->renders.rays[0].secondary);
+  EXPECT_EQ(g->renders.rays[0].shadow, m->renders.rays[0].shadow);
+  // TC03: the child's exception, with its message
   EXPECT_THAT([] { measureGalaxy(-1, 8, 8, {}); },
               ThrowsMessage<std::runtime_error>(HasSubstr("stars")));
-  // TC03: stopped: nothing
+  // TC04: stopped: nothing
   const std::atomic<bool> stop{true};
   EXPECT_EQ(measureGalaxy(1000, 8, 8, {.stop = &stop}), std::nullopt);
 }

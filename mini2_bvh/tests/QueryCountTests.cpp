@@ -5,6 +5,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "grid/Grid.h"
 #include "support/AllocationCounter.h"
 
 #include "RandomScenes.h"
@@ -88,8 +89,8 @@ TEST(QueryCountTests, bvh) {
 }
 
 TEST(QueryCountTests, noAllocationPerRay) {
-  // TC01: closestHit and forEachHit of the CBR and the BVH allocate nothing (the counter works:
-  // one operator new counts one)
+  // TC01: closestHit and forEachHit of the CBR, the BVH and the grid allocate nothing (the counter
+  // works: one operator new counts one)
   EXPECT_EQ(1, testing::allocationsDuring([] { ::operator delete(::operator new(16)); }));
   test::Random random(8);
   const Aabb box(Double3(-30), Double3(30));
@@ -98,12 +99,14 @@ TEST(QueryCountTests, noAllocationPerRay) {
   test::addUnbounded(scene, box);
   const Bvh bvh(scene);
   const Cbr cbr(scene);
+  const Grid grid(scene);
   const std::vector<test::Query> queries = test::randomQueries(random, 500, box);
   double sink = 0;
   const long allocations = testing::allocationsDuring([&] {
     for (const test::Query& q : queries) {
       for (const Intersectable* s :
-           {static_cast<const Intersectable*>(&bvh), static_cast<const Intersectable*>(&cbr)}) {
+           {static_cast<const Intersectable*>(&bvh), static_cast<const Intersectable*>(&cbr),
+            static_cast<const Intersectable*>(&grid)}) {
         if (const auto hit = s->closestHit(q.ray, q.tMax)) sink += hit->t;
         s->forEachHit(q.ray, q.tMax, [&sink](const Hit& h) {
           sink += h.t;

@@ -19,6 +19,7 @@
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
 #include "glossy/Samplers.h"
+#include "grid/Grid.h"
 #include "parallel/TilePool.h"
 #include "reflections/CourseScenes.h"
 #include "support/AllocationCounter.h"
@@ -42,12 +43,14 @@ std::string firstDifference(const Image& a, const Image& b) {
   return "";
 }
 
-/// A scene seen through the BVH and through the linear Geometries, with a sampler.
+/// A scene seen through the BVH, through the grid and through the linear Geometries, with a
+/// sampler.
 struct SampledScene {
   std::string name;
   std::unique_ptr<LitScene> scene;
   std::unique_ptr<Bvh> bvh;
-  std::unique_ptr<RayTracer> linear, accelerated;
+  std::unique_ptr<Grid> grid;
+  std::unique_ptr<RayTracer> linear, accelerated, gridded;
   std::unique_ptr<PixelSampler> sampler;
   Camera camera;
 };
@@ -60,11 +63,15 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
                  nullptr,
                  nullptr,
                  nullptr,
+                 nullptr,
+                 nullptr,
                  std::move(sampler),
                  camera.builder().build()};
   s.bvh = std::make_unique<Bvh>(s.scene->geometries);
   s.linear = std::make_unique<Tracer>(*s.scene);
   s.accelerated = std::make_unique<Tracer>(*s.scene, s.bvh.get());
+  s.grid = std::make_unique<Grid>(s.scene->geometries);
+  s.gridded = std::make_unique<Tracer>(*s.scene, s.grid.get());
   return s;
 }
 
@@ -155,6 +162,14 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
       EXPECT_EQ(r.pixels, all.pixels());
       EXPECT_FALSE(r.interrupted);
     }
+    // TC02: through the grid, serial and on 3 threads (tiles of 7): the linear scan's image
+    Image serialGrid(nX, nY), pooledGrid(nX, nY);
+    renderBlock(s.camera, *s.gridded, *s.sampler, all, serialGrid);
+    EXPECT_EQ(firstDifference(linear, serialGrid), "");
+    const RenderResult r =
+        renderImage({s.camera, *s.gridded, *s.sampler}, pooledGrid, {.threads = 3, .tileSize = 7});
+    EXPECT_EQ(firstDifference(linear, pooledGrid), "");
+    EXPECT_EQ(r.pixels, all.pixels());
   }
 }
 

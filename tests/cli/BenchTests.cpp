@@ -33,11 +33,11 @@ using test::run;
 /// mini 2's) but stage 4's debugging views.
 const std::vector<std::string> STAGE_TRACERS{"ambient", "phong", "shadow", "whitted", "beams"};
 
-/// The rows' names in the documented order: the reference report's four, then one per stage's
-/// tracer, named by its stage.
+/// The rows' names in the documented order: the reference report's four and the grid's, then one
+/// per stage's tracer, named by its stage.
 std::vector<std::string> expectedNames() {
   std::vector<std::string> names{"no acceleration", "threads", "threads + CBR",
-                                 "threads + CBR + BVH"};
+                                 "threads + CBR + BVH", "threads + grid"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   return names;
 }
@@ -73,25 +73,26 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_EQ(got, sortedKeys) << i;
     EXPECT_EQ(rows[i]["name"], names[i]) << i;
   }
-  // TC03: the reference rows render with the galaxy's tracer, beams, and the report's
-  // accelerations
-  const std::vector<std::string> accels{"none", "none", "cbr", "bvh"};
-  for (std::size_t i = 0; i < 4; ++i) {
+  // TC03: the reference rows and the grid's render with the galaxy's tracer, beams, and the
+  // report's accelerations, then the grid
+  const std::vector<std::string> accels{"none", "none", "cbr", "bvh", "grid"};
+  for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "beams") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
   }
   // TC04: then every stage's tracer, in the course's order, through the BVH (not the debugging
   // views rays, normals and hits)
-  for (std::size_t i = 4; i < rows.size(); ++i) {
-    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 4]) << i;
+  for (std::size_t i = 5; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 5]) << i;
     EXPECT_EQ(rows[i]["accel"], "bvh") << i;
   }
   // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles)
   for (const json& row : rows) EXPECT_EQ(row["threads"], 1) << row["name"];
   // TC06: one camera ray per pixel in every row
   for (const json& row : rows) EXPECT_EQ(row["primary"], 144) << row["name"];
-  // TC07: the reference rows trace the same rays: the images are the same bits, so are the counts
-  for (std::size_t i = 1; i < 4; ++i)
+  // TC07: the reference rows and the grid's trace the same rays: the images are the same bits,
+  // so are the counts
+  for (std::size_t i = 1; i < 5; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_GT(rows[0]["secondary"].get<long>(), 0);
@@ -99,13 +100,14 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   // TC08: the beams row through the BVH is the fourth row again
   for (const char* kind : {"primary", "secondary", "shadow", "nodesPerRay"})
     EXPECT_EQ(rows.back()[kind], rows[3][kind]) << kind;
-  // TC09: nodes per ray: none without a hierarchy, some through the BVH
+  // TC09: nodes per ray: none without a hierarchy, some through the BVH (and cells through the
+  // grid)
   EXPECT_EQ(rows[0]["nodesPerRay"], 0);
   EXPECT_EQ(rows[1]["nodesPerRay"], 0);
   for (std::size_t i = 3; i < rows.size(); ++i)
     EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
   // TC10: the reference report's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s,
-  // 6 min 47 s), null after them
+  // 6 min 47 s), null after them (the grid's row first)
   const std::vector<int> reference{4860, 1540, 837, 407};
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
   for (std::size_t i = 4; i < rows.size(); ++i)
@@ -141,7 +143,7 @@ TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
   EXPECT_EQ(rows[0]["threads"], 1);
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i]["threads"], 2) << i;
   // TC02: the same rays on one thread and on two
-  for (std::size_t i = 1; i < 4; ++i)
+  for (std::size_t i = 1; i < 5; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_EQ(rows[0]["primary"], 64 * 9);
@@ -271,10 +273,17 @@ TEST(BenchTests, scalingMeasuresEachGalaxyInItsOwnProcess) {
     EXPECT_GE(rows[i]["bytesPerStar"].get<long>(), 0);
     EXPECT_GE(rows[i]["buildSeconds"].get<double>(), 0);
     EXPECT_GT(rows[i]["renderSeconds"].get<double>(), 0);
+    // TC04: the grid's figures beside the BVH's, from a process of their own; both visit nodes
+    EXPECT_GT(rows[i]["gridPeakBytes"].get<long>(), 0);
+    EXPECT_GE(rows[i]["gridBytesPerStar"].get<long>(), 0);
+    EXPECT_GE(rows[i]["gridBuildSeconds"].get<double>(), 0);
+    EXPECT_GT(rows[i]["gridRenderSeconds"].get<double>(), 0);
+    EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0);
+    EXPECT_GT(rows[i]["gridCellsPerRay"].get<double>(), 0);
   }
   EXPECT_EQ(rows[0]["shapes"], 1065);
   EXPECT_EQ(rows[1]["shapes"], 2031);
-  // TC04: one progress line per galaxy
+  // TC05: one progress line per galaxy
   EXPECT_EQ(lines(r.err),
             (std::vector<std::string>{
                 "rt bench: galaxy 1/2: 1000 stars, 20x20, " + std::to_string(cores()) +
@@ -289,7 +298,9 @@ TEST(BenchTests, scalingCsvAndMarkdown) {
   ASSERT_EQ(r.code, 0) << r.err;
   std::vector<std::string> out = lines(r.out);
   ASSERT_EQ(out.size(), 2u) << r.out;
-  EXPECT_EQ(out[0], "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar");
+  EXPECT_EQ(out[0],
+            "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar,nodesPerRay,"
+            "gridBuildSeconds,gridRenderSeconds,gridPeakBytes,gridBytesPerStar,gridCellsPerRay");
   EXPECT_TRUE(out[1].starts_with("100,")) << out[1];
   // TC02: Markdown: a caption, the header exactly, a line per galaxy
   r = run({"bench", "--scaling", "--stars", "100", "--height", "8"});
@@ -298,8 +309,13 @@ TEST(BenchTests, scalingCsvAndMarkdown) {
   ASSERT_EQ(out.size(), 5u) << r.out;
   EXPECT_TRUE(out[0].starts_with("rt bench --scaling: the galaxy without diffusion, 8x8 "))
       << out[0];
-  EXPECT_EQ(out[2], "| stars | shapes | BVH build | render | peak memory | bytes per star |");
-  EXPECT_EQ(out[3], "| ---: | ---: | ---: | ---: | ---: | ---: |");
+  EXPECT_EQ(
+      out[2],
+      "| stars | shapes | BVH build | BVH render | BVH peak | BVH bytes/star | nodes/ray | grid "
+      "build | grid render | grid peak | grid bytes/star | cells/ray |");
+  EXPECT_EQ(
+      out[3],
+      "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
   EXPECT_TRUE(out[4].starts_with("| 100 | ")) << out[4];
 }
 
@@ -368,7 +384,7 @@ TEST(BenchTests, badUsageExitsWithTwoBeforeAnyRay) {
       {"TC13",
        {"bench", "--scaling", "--tracer", "phong"},
        "rt: --tracer: not with --scaling (it renders the galaxy of --stars stars without "
-       "diffusion, beams tracer, BVH)\n"},
+       "diffusion, beams tracer, BVH and grid)\n"},
       // TC14: a bad parameter of the galaxy
       {"TC14",
        {"bench", "--param", "stars=-1"},

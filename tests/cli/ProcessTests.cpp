@@ -137,6 +137,7 @@ TEST(RenderProcessTests, threadsAndAccelerationChangeNothingInTheImage) {
   // TC02: each acceleration structure, and every core (0), the same bytes
   EXPECT_EQ(renderWith("cbr", {"--accel", "cbr", "--threads", "1"}), reference);
   EXPECT_EQ(renderWith("bvh", {"--accel", "bvh", "--threads", "0"}), reference);
+  EXPECT_EQ(renderWith("grid", {"--accel", "grid", "--threads", "0"}), reference);
 }
 
 TEST(RenderProcessTests, badSceneFileExitsWithTwo) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "benchmark/Measure.h"
 #include "camera/RenderBlock.h"
 #include "camera/SampleContext.h"
 #include "parallel/TilePool.h"
@@ -49,22 +50,24 @@ struct TimedRenders {
 ///         what renderImage throws.
 TimedRenders timeRenders(const RenderContext& context, const TimingOptions& options);
 
-/// One galaxy of the star scaling, without diffusion, seen through the middle of the reference report's view.
+/// One galaxy of the star scaling, without diffusion, seen through the middle of the reference
+/// report's view.
 struct GalaxyMeasurement {
   std::uint64_t shapes = 0;    ///< every shape of the scene: stars, suns, core, box, frame, ...
   double generateSeconds = 0;  ///< galaxy(params): CPU time
-  double buildSeconds = 0;     ///< the BVH's build (one thread): CPU time
-  std::uint64_t bvhBytes = 0;  ///< the BVH's memory
-  TimedRenders renders;        ///< the beams tracer through the BVH, one camera ray per pixel
+  double buildSeconds = 0;     ///< the BVH's (or grid's) build (one thread): CPU time
+  std::uint64_t structureBytes = 0;  ///< the BVH's (or grid's) memory
+  TimedRenders renders;        ///< the beams tracer through the structure, one camera ray per pixel
   std::int64_t peakBytes = 0;  ///< the child process's peak resident size (ru_maxrss)
 };
 
 /// Measures the galaxy of `stars` stars at nX x nY in a child process of its own
-/// (runInChildProcess): generated, its BVH built, rendered by timeRenders.
+/// (runInChildProcess): generated, its BVH (or grid) built, rendered by timeRenders.
 /// @returns nothing when options.stop was raised (the child is killed, or its render stopped).
 /// @throws std::runtime_error with the child's message when it failed (invalid parameters,
 ///         say); std::system_error when the process cannot be made.
 std::optional<GalaxyMeasurement> measureGalaxy(long stars, int nX, int nY,
-                                               const TimingOptions& options);
+                                               const TimingOptions& options,
+                                               GalaxyAccel accel = GalaxyAccel::Bvh);
 
 }  // namespace rt

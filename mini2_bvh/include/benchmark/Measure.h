@@ -2,8 +2,8 @@
 /// @file Measure.h
 /// What the benchmarks measure with (mini2_render_bench, and `rt bench` in the command-line
 /// program): the CPU clocks, the median, the reference report's galaxy ready to render with its
-/// generation and its BVH build timed, and a configuration's peak memory measured in a process of
-/// its own. A timing is never a test: these print figures, they assert nothing.
+/// generation and its BVH's (or grid's) build timed, and a configuration's peak memory measured in
+/// a process of its own. A timing is never a test: these print figures, they assert nothing.
 
 #include <atomic>
 #include <cstddef>
@@ -20,6 +20,7 @@
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
+#include "grid/Grid.h"
 
 namespace rt {
 
@@ -34,17 +35,23 @@ double processCpuSeconds();
 /// @throws std::invalid_argument when values is empty.
 double median(std::vector<double> values);
 
-/// A galaxy ready to render: the scene, its BVH, the beams tracer through it. Not movable: the
-/// BVH and the tracer refer to the scene.
+/// The structure a GalaxyRender is built with.
+enum class GalaxyAccel { Bvh, Grid };
+
+/// A galaxy ready to render: the scene, its BVH (or its grid), the beams tracer through it. Not
+/// movable: the structure and the tracer refer to the scene.
 struct GalaxyRender {
   GalaxySetup setup;
   double generateSeconds = 0;  ///< galaxy(params): this thread's CPU time
-  double buildSeconds = 0;     ///< the BVH's build (one thread): this thread's CPU time
-  std::unique_ptr<Bvh> bvh;
+  double buildSeconds = 0;     ///< the structure's build (one thread): this thread's CPU time
+  std::unique_ptr<Bvh> bvh;    ///< null for GalaxyAccel::Grid
+  std::unique_ptr<Grid> grid;  ///< null for GalaxyAccel::Bvh
   std::unique_ptr<BeamTracer> tracer;
 
   /// @throws std::invalid_argument for invalid parameters (GalaxyParams::validate).
-  explicit GalaxyRender(const GalaxyParams& params);
+  explicit GalaxyRender(const GalaxyParams& params, GalaxyAccel accel = GalaxyAccel::Bvh);
+  /// The bytes the structure holds on the heap.
+  std::size_t structureBytes() const noexcept;
   GalaxyRender(const GalaxyRender&) = delete;
   GalaxyRender& operator=(const GalaxyRender&) = delete;
 };

@@ -14,8 +14,9 @@
 namespace rt {
 
 /// "none": the scene's own list (the course's linear search); "cbr": a bounding box around each
-/// shape, tested before the shape; "bvh": the bounding volume hierarchy.
-inline constexpr std::array<std::string_view, 3> ACCELERATION_NAMES{"none", "cbr", "bvh"};
+/// shape, tested before the shape; "bvh": the bounding volume hierarchy; "grid": the regular grid
+/// of voxels walked by 3D-DDA.
+inline constexpr std::array<std::string_view, 4> ACCELERATION_NAMES{"none", "cbr", "bvh", "grid"};
 
 /// True when name is one of ACCELERATION_NAMES.
 bool isAccelerationName(std::string_view name) noexcept;

@@ -62,16 +62,16 @@ TimedRenders timeRenders(const RenderContext& context, const TimingOptions& opti
 }
 
 std::optional<GalaxyMeasurement> measureGalaxy(long stars, int nX, int nY,
-                                               const TimingOptions& options) {
+                                               const TimingOptions& options, GalaxyAccel accel) {
   const auto measured = measureInChildProcess<GalaxyMeasurement>(
-      [stars, nX, nY, &options] {
-        const GalaxyRender g(GalaxyParams{.stars = stars, .diffusion = false});
+      [stars, nX, nY, &options, accel] {
+        const GalaxyRender g(GalaxyParams{.stars = stars, .diffusion = false}, accel);
         const Camera camera = referenceView(g.setup, nX, nY);
         const CenterSampler sampler;
         return GalaxyMeasurement{.shapes = g.setup.scene.geometries.size(),
                                  .generateSeconds = g.generateSeconds,
                                  .buildSeconds = g.buildSeconds,
-                                 .bvhBytes = g.bvh->memoryBytes(),
+                                 .structureBytes = g.structureBytes(),
                                  .renders = timeRenders({camera, *g.tracer, sampler}, options)};
       },
       options.stop);

@@ -94,14 +94,25 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-GalaxyRender::GalaxyRender(const GalaxyParams& params) {
+GalaxyRender::GalaxyRender(const GalaxyParams& params, GalaxyAccel accel) {
   double start = threadCpuSeconds();
   setup = galaxy(params);
   generateSeconds = threadCpuSeconds() - start;
   start = threadCpuSeconds();
-  bvh = std::make_unique<Bvh>(setup.scene.geometries);
+  const Intersectable* structure = nullptr;
+  if (accel == GalaxyAccel::Grid) {
+    grid = std::make_unique<Grid>(setup.scene.geometries);
+    structure = grid.get();
+  } else {
+    bvh = std::make_unique<Bvh>(setup.scene.geometries);
+    structure = bvh.get();
+  }
   buildSeconds = threadCpuSeconds() - start;
-  tracer = std::make_unique<BeamTracer>(setup.scene, bvh.get());
+  tracer = std::make_unique<BeamTracer>(setup.scene, structure);
+}
+
+std::size_t GalaxyRender::structureBytes() const noexcept {
+  return bvh ? bvh->memoryBytes() : grid ? grid->memoryBytes() : 0;
 }
 
 Camera referenceView(const GalaxySetup& g, int nX, int nY) {

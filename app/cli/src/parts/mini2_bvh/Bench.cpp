@@ -52,16 +52,19 @@ void addBenchCommand(CommandLine& rt) {
       "Renders SCENE (default: the built-in galaxy, 128 pixels wide; --full: the scene's own\n"
       "resolution, the reference report's 1280x720 for the galaxy) with the reference\n"
       "report's rows, its own times beside them for the galaxy: no acceleration on one\n"
-      "thread; threads; threads + CBR; threads + CBR + BVH; then with every stage's tracer\n"
-      "through the BVH on every thread. Columns: row, tracer, accel, threads (that rendered),\n"
+      "thread; threads; threads + CBR; threads + CBR + BVH; and threads + grid (the regular\n"
+      "grid, no report time); then with every stage's tracer through the BVH on every thread. "
+      "Columns: row, tracer, accel, threads (that rendered),\n"
       "wall time, the reference report's time, primary, secondary and shadow rays, rays per\n"
-      "second (every ray), BVH nodes visited per ray, speed-up over the first row. Markdown by "
+      "second (every ray), BVH nodes (grid cells) visited per ray, speed-up over the first row. "
+      "Markdown by "
       "default, --csv or --json,\n"
       "or by -o's ending (.md, .csv, .json); the file is written whole or not at all.\n\n"
       "--scaling renders the galaxy without diffusion with 10^3, 10^4, 10^5 and 10^6 stars\n"
-      "(--stars LIST) at 400x400 through the BVH on every thread, each in a process of its\n"
-      "own, and prints the BVH's build time (CPU), the render's wall time, the process's peak\n"
-      "resident size and the bytes per star ((peak - an empty process's peak) / stars).\n\n"
+      "(--stars LIST) at 400x400 through the BVH and through the grid on every thread, each in\n"
+      "a process of its own, and prints for each the build time (CPU), the render's wall time,\n"
+      "the process's peak resident size, the bytes per star ((peak - an empty process's peak)\n"
+      "/ stars) and the nodes (cells) visited per ray.\n\n"
       "Everything is checked before the first ray. A line per row started goes to stderr,\n"
       "the table to stdout (or -o's file). Ctrl-C stops the bench within a row, writes\n"
       "nothing, and exits with code 130. Wall times on a loaded machine are noisy: compare\n"
@@ -70,7 +73,7 @@ void addBenchCommand(CommandLine& rt) {
   addSceneArguments(*command, args->scene,
                     "image width in pixels, 1..32768 (default: 128; the scaling's 400)",
                     "image height in pixels, 1..32768 (default: the scene's aspect ratio)",
-                    "the tracer of the first four rows (default: the scene's)");
+                    "the tracer of the first five rows (default: the scene's)");
   // The rows choose the acceleration themselves; SCENE may be left out (the galaxy).
   command->remove_option(command->get_option("--accel"));
   command->get_option("--threads")

@@ -1,6 +1,7 @@
 // rt bench --scaling: the galaxy without diffusion at 10^3 to 10^6 stars (--stars), each
-// measured in a process of its own (mini2's benchmark/GalaxyScaling.h, which mini2_render_bench
-// uses too): the BVH's build, the render's wall time, the peak resident size, the bytes per star.
+// measured through the BVH and through the grid, each in a process of its own (mini2's
+// benchmark/GalaxyScaling.h, which mini2_render_bench uses too): the structure's build, the
+// render's wall time, the peak resident size, the bytes per star, the nodes (cells) per ray.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -54,7 +55,7 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
   if (refused)
     throw UsageError(std::string(refused) +
                      ": not with --scaling (it renders the galaxy of --stars stars without "
-                     "diffusion, beams tracer, BVH)");
+                     "diffusion, beams tracer, BVH and grid)");
   std::vector<long> stars;
   starsError(args.stars.value_or(DEFAULT_STARS), &stars);  // checked when parsed
   // A side given alone makes the image square too.
@@ -79,17 +80,24 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
                               std::to_string(stars.size()) + " (" + std::to_string(n) + " stars)";
     io.err << "rt bench: galaxy " << i + 1 << "/" << stars.size() << ": " << n << " stars, " << nX
            << "x" << nY << ", " << threadsText(threads) << std::endl;
-    const std::optional<GalaxyMeasurement> m =
-        measureGalaxy(n, nX, nY, {.threads = {threads}, .repeat = args.repeat, .stop = io.stop});
-    if (!m) return benchInterrupted(where, args, io);
-    const std::int64_t grown = std::max<std::int64_t>(0, m->peakBytes - *baseline);
-    table.rows.push_back(
-        {.stars = n,
-         .shapes = m->shapes,
-         .buildSeconds = m->buildSeconds,
-         .renderSeconds = m->renders.wall[0],
-         .peakBytes = m->peakBytes,
-         .bytesPerStar = std::llround(static_cast<double>(grown) / static_cast<double>(n))});
+    ScalingRow row{.stars = n, .shapes = 0, .bvh = {}, .grid = {}};
+    for (const GalaxyAccel accel : {GalaxyAccel::Bvh, GalaxyAccel::Grid}) {
+      const std::optional<GalaxyMeasurement> m = measureGalaxy(
+          n, nX, nY, {.threads = {threads}, .repeat = args.repeat, .stop = io.stop}, accel);
+      if (!m) return benchInterrupted(where, args, io);
+      const std::int64_t grown = std::max<std::int64_t>(0, m->peakBytes - *baseline);
+      const RayCounts& rays = m->renders.rays[0];
+      row.shapes = m->shapes;
+      (accel == GalaxyAccel::Bvh ? row.bvh : row.grid) = ScalingFigures{
+          .buildSeconds = m->buildSeconds,
+          .renderSeconds = m->renders.wall[0],
+          .peakBytes = m->peakBytes,
+          .bytesPerStar = std::llround(static_cast<double>(grown) / static_cast<double>(n)),
+          .nodesPerRay = rays.total() > 0 ? static_cast<double>(rays.queries.nodesVisited) /
+                                                static_cast<double>(rays.total())
+                                          : 0};
+    }
+    table.rows.push_back(row);
   }
   emit(
       to, [&table](TableFormat f) { return formatScalingTable(table, f); }, io);

@@ -149,10 +149,16 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
       for (const ScalingRow& r : table.rows)
         rows.push_back(Json{{"stars", r.stars},
                             {"shapes", r.shapes},
-                            {"buildSeconds", jsonNumber(r.buildSeconds)},
-                            {"renderSeconds", jsonNumber(r.renderSeconds)},
-                            {"peakBytes", r.peakBytes},
-                            {"bytesPerStar", r.bytesPerStar}});
+                            {"buildSeconds", jsonNumber(r.bvh.buildSeconds)},
+                            {"renderSeconds", jsonNumber(r.bvh.renderSeconds)},
+                            {"peakBytes", r.bvh.peakBytes},
+                            {"bytesPerStar", r.bvh.bytesPerStar},
+                            {"nodesPerRay", jsonNumber(r.bvh.nodesPerRay)},
+                            {"gridBuildSeconds", jsonNumber(r.grid.buildSeconds)},
+                            {"gridRenderSeconds", jsonNumber(r.grid.renderSeconds)},
+                            {"gridPeakBytes", r.grid.peakBytes},
+                            {"gridBytesPerStar", r.grid.bytesPerStar},
+                            {"gridCellsPerRay", jsonNumber(r.grid.nodesPerRay)}});
       return formatJson(Json{{"scene", "galaxy"},
                              {"width", table.width},
                              {"height", table.height},
@@ -160,26 +166,39 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
     }
     case TableFormat::Csv: {
       std::string out = std::string(SCALING_CSV_HEADER) + "\n";
-      for (const ScalingRow& r : table.rows)
-        out += std::to_string(r.stars) + "," + std::to_string(r.shapes) + "," +
-               formatNumber(r.buildSeconds) + "," + formatNumber(r.renderSeconds) + "," +
-               std::to_string(r.peakBytes) + "," + std::to_string(r.bytesPerStar) + "\n";
+      for (const ScalingRow& r : table.rows) {
+        out += std::to_string(r.stars) + "," + std::to_string(r.shapes);
+        for (const ScalingFigures* f : {&r.bvh, &r.grid})
+          out += "," + formatNumber(f->buildSeconds) + "," + formatNumber(f->renderSeconds) + "," +
+                 std::to_string(f->peakBytes) + "," + std::to_string(f->bytesPerStar) + "," +
+                 formatNumber(f->nodesPerRay);
+        out += "\n";
+      }
       return out;
     }
     case TableFormat::Markdown:
       break;
   }
-  MarkdownTable md({"stars", "shapes", "BVH build", "render", "peak memory", "bytes per star"},
-                   {true, true, true, true, true, true});
-  for (const ScalingRow& r : table.rows)
-    md.add({std::to_string(r.stars), std::to_string(r.shapes), formatDuration(r.buildSeconds),
-            formatDuration(r.renderSeconds), mebibytes(r.peakBytes),
-            std::to_string(r.bytesPerStar)});
+  MarkdownTable md(
+      {"stars", "shapes", "BVH build", "BVH render", "BVH peak", "BVH bytes/star", "nodes/ray",
+       "grid build", "grid render", "grid peak", "grid bytes/star", "cells/ray"},
+      std::vector<bool>(12, true));
+  for (const ScalingRow& r : table.rows) {
+    std::vector<std::string> cells{std::to_string(r.stars), std::to_string(r.shapes)};
+    for (const ScalingFigures* f : {&r.bvh, &r.grid})
+      cells.insert(cells.end(), {formatDuration(f->buildSeconds), formatDuration(f->renderSeconds),
+                                 mebibytes(f->peakBytes), std::to_string(f->bytesPerStar),
+                                 fixed(f->nodesPerRay, 2)});
+    md.add(cells);
+  }
   return "rt bench --scaling: the galaxy without diffusion, " + std::to_string(table.width) + "x" +
-         std::to_string(table.height) + " (the middle of the reference report's view), beams tracer, BVH, " +
+         std::to_string(table.height) +
+         " (the middle of the reference report's view), beams tracer, through the BVH and through "
+         "the grid, " +
          std::to_string(table.threads) + " threads, " + table.machine + "; " +
          rendersOf(table.repeat) +
-         "; each galaxy in a process of its own: BVH build in CPU time, render in wall time, "
+         "; each galaxy and structure in a process of its own: build in CPU time, render in wall "
+         "time, "
          "peak = its ru_maxrss, bytes per star = (peak - " +
          mebibytes(table.baselineBytes) + " of an empty process) / stars\n\n" + md.text();
 }

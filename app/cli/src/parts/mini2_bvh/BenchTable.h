@@ -19,7 +19,7 @@ enum class TableFormat { Markdown, Csv, Json };
 struct BenchRow {
   std::string name;    ///< "no acceleration, 1 thread", ..., or the tracer's stage
   std::string tracer;  ///< a tracer's name (--tracer)
-  std::string accel;   ///< none, cbr or bvh
+  std::string accel;   ///< none, cbr, bvh or grid
   int threads = 1;     ///< threads that rendered (never more than the image's tiles)
   double seconds = 0;  ///< wall time of the render: the median of the repeats
   RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
@@ -41,14 +41,21 @@ struct BenchTable {
   double speedup(const BenchRow& row) const;
 };
 
-/// One galaxy of the star scaling, measured in a process of its own.
-struct ScalingRow {
-  long stars = 0;                 ///< the galaxy's stars parameter
-  std::uint64_t shapes = 0;       ///< every shape of the scene: stars, suns, core, box, frame, ...
-  double buildSeconds = 0;        ///< the BVH's build: CPU time (it runs on one thread)
+/// One structure's figures for one galaxy of the star scaling, measured in a process of its own.
+struct ScalingFigures {
+  double buildSeconds = 0;        ///< the structure's build: CPU time (it runs on one thread)
   double renderSeconds = 0;       ///< wall time of the render: the median of the repeats
   std::int64_t peakBytes = 0;     ///< the process's peak resident size (ru_maxrss)
   std::int64_t bytesPerStar = 0;  ///< (peakBytes - the empty process's) / stars, at least 0
+  double nodesPerRay = 0;         ///< BVH nodes (grid cells) visited per ray, every ray
+};
+
+/// One galaxy of the star scaling, through the BVH and through the grid.
+struct ScalingRow {
+  long stars = 0;            ///< the galaxy's stars parameter
+  std::uint64_t shapes = 0;  ///< every shape of the scene: stars, suns, core, box, frame, ...
+  ScalingFigures bvh;
+  ScalingFigures grid;
 };
 
 struct ScalingTable {
@@ -71,6 +78,7 @@ inline constexpr std::string_view BENCH_CSV_HEADER =
     "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,speedup,"
     "referenceSeconds";
 inline constexpr std::string_view SCALING_CSV_HEADER =
-    "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar";
+    "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar,nodesPerRay,"
+    "gridBuildSeconds,gridRenderSeconds,gridPeakBytes,gridBytesPerStar,gridCellsPerRay";
 
 }  // namespace rt::cli
