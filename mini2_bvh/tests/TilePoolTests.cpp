@@ -164,7 +164,7 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
     }
     // TC02: through the grid, serial and on 3 threads (tiles of 7): the linear scan's image
     Image serialGrid(nX, nY), pooledGrid(nX, nY);
-    renderBlock(s.camera, *s.gridded, *s.sampler, all, serialGrid);
+    renderBlock({s.camera, *s.gridded, *s.sampler}, all, serialGrid);
     EXPECT_EQ(firstDifference(linear, serialGrid), "");
     const RenderResult r =
         renderImage({s.camera, *s.gridded, *s.sampler}, pooledGrid, {.threads = 3, .tileSize = 7});
