@@ -12,6 +12,7 @@
 #include <algorithm>
 
 #include "bvh/SlabRay.h"
+#include "bvh/UnboundedShapes.h"
 #include "intersections/HitRules.h"
 
 namespace rt {
@@ -82,8 +83,7 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Bvh::closestHit, unbounded shapes, then the walk, bound min(limit, t)
   NearestHit nearest(tMax);
-  for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
-  std::uint64_t tests = unbounded_.size(), visited = 0;
+  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest), visited = 0;
   const double limit = slabLimit(tMax);
   traverse(
       ray, [&] { return std::min(limit, nearest.t()); },
@@ -95,10 +95,7 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
         });
       },
       visited);
-  if (counts != nullptr) {
-    counts->shapeTests += tests;
-    counts->nodesVisited += visited;
-  }
+  addQueryCounts(counts, tests, visited);
   return nearest.hit();
   // END SOLUTION
 }
@@ -106,11 +103,7 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
 bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Bvh::forEachHit, every hit within tMax until the visitor says stop
   std::uint64_t tests = 0, visited = 0;
-  bool complete = true;
-  for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
-    ++tests;
-    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
-  }
+  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
   if (complete) {
     const double limit = slabLimit(tMax);
     complete = traverse(
@@ -123,10 +116,7 @@ bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
         },
         visited);
   }
-  if (counts != nullptr) {
-    counts->shapeTests += tests;
-    counts->nodesVisited += visited;
-  }
+  addQueryCounts(counts, tests, visited);
   return complete;
   // END SOLUTION
 }

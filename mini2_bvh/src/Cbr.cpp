@@ -4,6 +4,7 @@
 
 #include "bvh/BoundingBox.h"
 #include "bvh/SlabRay.h"
+#include "bvh/UnboundedShapes.h"
 #include "intersections/HitRules.h"
 
 namespace rt {
@@ -21,8 +22,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Cbr::closestHit, a shape's exact test only when its box is hit
   NearestHit nearest(tMax);
-  for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
-  std::uint64_t tests = unbounded_.size();
+  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest);
   const SlabRay slab(ray);
   const double limit = slabLimit(tMax);
   for (const BoxedShape& s : bounded_) {
@@ -33,7 +33,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
     nearest.offer(intersectRoots(shapes_[s.geometry], ray), s.geometry);
     ++tests;
   }
-  if (counts != nullptr) *counts += QueryCounts{tests, bounded_.size()};
+  addQueryCounts(counts, tests, bounded_.size());
   return nearest.hit();
   // END SOLUTION
 }
@@ -41,11 +41,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
 bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Cbr::forEachHit, visit the hits of the shapes whose box is hit
   std::uint64_t tests = 0;
-  bool complete = true;
-  for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
-    ++tests;
-    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
-  }
+  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
   const SlabRay slab(ray);
   const double limit = slabLimit(tMax);
   std::uint64_t boxes = 0;
@@ -57,7 +53,7 @@ bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
     ++tests;
     complete = visitHits(intersectRoots(shapes_[s.geometry], ray), s.geometry, tMax, visit);
   }
-  if (counts != nullptr) *counts += QueryCounts{tests, boxes};
+  addQueryCounts(counts, tests, boxes);
   return complete;
   // END SOLUTION
 }

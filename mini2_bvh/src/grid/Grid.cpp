@@ -13,6 +13,7 @@
 #include "bvh/BoundingBox.h"
 #include "bvh/FloatBox.h"
 #include "bvh/SlabRay.h"
+#include "bvh/UnboundedShapes.h"
 #include "intersections/HitRules.h"
 
 namespace rt {
@@ -247,8 +248,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
                                     QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Grid::closestHit, unbounded shapes, then the walk until the best hit
   NearestHit nearest(tMax);
-  for (std::uint32_t i : unbounded_) nearest.offer(intersectRoots(shapes_[i], ray), i);
-  std::uint64_t tests = unbounded_.size(), visited = 0;
+  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest), visited = 0;
   const double limit = slabLimit(tMax);
   // A cell that begins strictly after the best hit cannot hold a better one; one that begins
   // exactly at it can (a smaller index), so the walk goes on into it.
@@ -262,10 +262,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
         });
       },
       visited);
-  if (counts != nullptr) {
-    counts->shapeTests += tests;
-    counts->nodesVisited += visited;
-  }
+  addQueryCounts(counts, tests, visited);
   return nearest.hit();
   // END SOLUTION
 }
@@ -273,11 +270,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
 bool Grid::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Grid::forEachHit, every hit within tMax until the visitor says stop
   std::uint64_t tests = 0, visited = 0;
-  bool complete = true;
-  for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
-    ++tests;
-    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
-  }
+  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
   if (complete) {
     const double limit = slabLimit(tMax);
     complete = walk(
@@ -290,10 +283,7 @@ bool Grid::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts
         },
         visited);
   }
-  if (counts != nullptr) {
-    counts->shapeTests += tests;
-    counts->nodesVisited += visited;
-  }
+  addQueryCounts(counts, tests, visited);
   return complete;
   // END SOLUTION
 }

@@ -1,0 +1,47 @@
+#pragma once
+/// @file UnboundedShapes.h
+/// What every acceleration structure does first: the shapes it cannot bound (planes, tubes, shapes
+/// beyond the float range) stay outside it, and a query tests them one by one before it walks the
+/// boxes, the tree or the cells. CBR, the BVH and the grid share these steps, so that the three
+/// answer the unbounded shapes exactly alike, and count them alike.
+
+#include <cstdint>
+#include <span>
+
+#include "geometries/Geometry.h"
+#include "intersections/HitRules.h"
+#include "intersections/Intersect.h"
+#include "intersections/Intersectable.h"
+#include "primitives/Ray.h"
+
+namespace rt {
+
+/// The closest-hit query's first step: offers each unbounded shape's hits to nearest.
+/// @returns the exact tests made (one per unbounded shape).
+inline std::uint64_t offerUnbounded(std::span<const std::uint32_t> unbounded,
+                                    std::span<const Geometry> shapes, const Ray& ray,
+                                    NearestHit& nearest) noexcept {
+  for (const std::uint32_t i : unbounded) nearest.offer(intersectRoots(shapes[i], ray), i);
+  return unbounded.size();
+}
+
+/// The every-hit query's first step: visits each unbounded shape's hits within tMax until visit
+/// says stop, adding the exact tests made to tests.
+/// @returns false when visit stopped the query.
+inline bool visitUnbounded(std::span<const std::uint32_t> unbounded,
+                           std::span<const Geometry> shapes, const Ray& ray, double tMax,
+                           HitVisitor visit, std::uint64_t& tests) {
+  for (const std::uint32_t i : unbounded) {
+    ++tests;
+    if (!visitHits(intersectRoots(shapes[i], ray), i, tMax, visit)) return false;
+  }
+  return true;
+}
+
+/// Adds a query's exact tests and its boxes, nodes or cells to counts, when counts is given.
+inline void addQueryCounts(QueryCounts* counts, std::uint64_t tests,
+                           std::uint64_t visited) noexcept {
+  if (counts != nullptr) *counts += QueryCounts{tests, visited};
+}
+
+}  // namespace rt
