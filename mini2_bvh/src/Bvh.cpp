@@ -103,7 +103,14 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
 bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Bvh::forEachHit, every hit within tMax until the visitor says stop
   std::uint64_t tests = 0, visited = 0;
-  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
+  // The unbounded shapes' step, spelled out rather than through visitUnbounded: with the call,
+  // GCC 12 stops inlining the walk below into this query, which costs the galaxy 2.4 % of its
+  // instructions (callgrind, 96 x 54, one thread); CBR and the grid use the shared step.
+  bool complete = true;
+  for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
+    ++tests;
+    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
+  }
   if (complete) {
     const double limit = slabLimit(tMax);
     complete = traverse(

@@ -31,11 +31,12 @@ inline std::uint64_t offerUnbounded(std::span<const std::uint32_t> unbounded,
 inline bool visitUnbounded(std::span<const std::uint32_t> unbounded,
                            std::span<const Geometry> shapes, const Ray& ray, double tMax,
                            HitVisitor visit, std::uint64_t& tests) {
-  for (const std::uint32_t i : unbounded) {
+  bool complete = true;
+  for (std::size_t k = 0; complete && k < unbounded.size(); ++k) {
     ++tests;
-    if (!visitHits(intersectRoots(shapes[i], ray), i, tMax, visit)) return false;
+    complete = visitHits(intersectRoots(shapes[unbounded[k]], ray), unbounded[k], tMax, visit);
   }
-  return true;
+  return complete;
 }
 
 /// Adds a query's exact tests and its boxes, nodes or cells to counts, when counts is given.
