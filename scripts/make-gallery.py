@@ -20,7 +20,7 @@ then too; 2 for bad usage or a timing file that does not follow the schema below
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
-   "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh", "threads": N,
+   "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh|grid", "threads": N,
              "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
              "nodesPerRay": Y, "speedup": Z, "referenceSeconds": null or a number}]}
   (the reference report's time for the row).

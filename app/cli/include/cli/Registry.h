@@ -10,12 +10,12 @@
 /// own. The three pieces a render has exactly one of are StagePieces, and the highest stage of
 /// the build that supplies one wins, whatever the order the parts register in:
 ///
-///     piece             supplied by                    in a cut after
-///     makeSampler       stage04_camera (centre ray)    stage 4 to stage 7
-///                       mini1_glossy (jittered, lens, adaptive)  mini 1 on
-///     render            stage04_camera (rows, calling thread)    stage 4 to mini 1
-///                       mini2_bvh (tiles on a pool of threads)   mini 2
-///     makeAccelerator   mini2_bvh (none, cbr, bvh)     mini 2 (before: none, the scene's list)
+///     piece             supplied by                               in a cut after
+///     makeSampler       stage04_camera (the centre ray)           stage04 .. stage07
+///                       mini1_glossy (jittered, lens, adaptive)   mini1, mini2
+///     render            stage04_camera (rows, calling thread)     stage04 .. mini1
+///                       mini2_bvh (tiles on a pool of threads)    mini2
+///     makeAccelerator   mini2_bvh (none, cbr, bvh, grid)          mini2 (before it: none)
 ///
 /// Two parts of one stage supplying the same piece are refused (std::logic_error), and so is a
 /// stage that is not one of the course's (the root CMakeLists.txt's RT_STAGES, in their order).
