@@ -86,6 +86,19 @@ std::string expectThrow(const fs::path& file, const ModelOptions& o) {
   return {};
 }
 
+// A build without Assimp says how to get it (the other tests are skipped there).
+TEST(ModelFileWithoutAssimp, SaysHowToGetAssimp) {
+  if (modelFilesSupported()) GTEST_SKIP() << "this build reads model files (it has Assimp)";
+  try {
+    readModelFile("any.obj", ModelOptions{});
+    ADD_FAILURE() << "no ModelError";
+  } catch (const ModelError& e) {
+    EXPECT_STREQ(e.what(),
+                 "any.obj: reading model files needs Assimp: install libassimp-dev "
+                 "(scripts/deps.sh installs it)");
+  }
+}
+
 // ---- OBJ ----------------------------------------------------------------------------------
 
 TEST_F(ModelFileTest, ObjQuadAndPentagonAreTriangulated) {
@@ -393,6 +406,23 @@ TEST_F(ModelFileTest, APlyWithoutItsFaceDataIsRefused) {
   const auto file = write("cut.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n");
   EXPECT_EQ(expectThrow(file, flat()),
             file.string() + ": face 0 of mesh 0 has no vertex indices (does the file end early?)");
+}
+
+TEST_F(ModelFileTest, APlyHeaderWithoutItsEndIsRefused) {
+  // Assimp's PLY reader would never return on it (the model fuzzer found this).
+  const auto file = write("endless.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
+  EXPECT_EQ(expectThrow(file, flat()),
+            file.string() + ": the PLY header does not end (no end_header in its first 38 bytes)");
+  const std::string text = "PLY\nformat ascii 1.0\n";
+  try {
+    readModelFromMemory({reinterpret_cast<const std::byte*>(text.data()), text.size()}, "ply",
+                        "mem.ply", flat());
+    ADD_FAILURE() << "no ModelError";
+  } catch (const ModelError& e) {
+    EXPECT_STREQ(e.what(),
+                 "mem.ply: the PLY header does not end (no end_header in its first 21 "
+                 "bytes)");
+  }
 }
 
 TEST_F(ModelFileTest, APlyIndexOutOfRangeIsRefusedWithAssimpsMessage) {

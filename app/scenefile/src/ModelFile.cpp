@@ -6,6 +6,7 @@
 /// keep (see flagsFor); this file walks the node tree, applies the node
 /// transforms and the caller's transform in double precision, joins the meshes of one material
 /// and hands the arrays to TriangleMesh, which validates them.
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -277,6 +278,21 @@ const aiScene* postProcess(Assimp::Importer& importer, const aiScene* scene, uns
   return importer.ApplyPostProcessing(flags);
 }
 
+/// How far into a PLY file its header must have ended.
+constexpr std::size_t kPlyHeaderLimit = std::size_t{1} << 20;
+
+/// Assimp 5.2's PLY reader never returns on a header without "end_header" (found by the model
+/// fuzzer): such a file is refused before Assimp sees it. start is the file's first bytes, up to
+/// kPlyHeaderLimit of them.
+void requirePlyHeaderEnds(std::string_view start, const std::string& source) {
+  const bool ply =
+      start.size() >= 3 && (start.substr(0, 3) == "ply" || start.substr(0, 3) == "PLY");
+  if (ply && start.find("end_header") == std::string_view::npos)
+    throw ModelError(source, "the PLY header does not end (no end_header in its first " +
+                                 std::to_string(std::min(start.size(), kPlyHeaderLimit)) +
+                                 " bytes)");
+}
+
 }  // namespace
 
 ModelError::ModelError(std::string file, const std::string& what)
@@ -292,7 +308,10 @@ ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& o
     throw ModelError(source, "cannot read: it is a directory");
   std::FILE* f = std::fopen(source.c_str(), "rb");
   if (f == nullptr) throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
+  std::string start(kPlyHeaderLimit, '\0');
+  start.resize(std::fread(start.data(), 1, start.size(), f));
   std::fclose(f);
+  requirePlyHeaderEnds(start, source);
   fromOptions(options.transform, source);  // refused before the file is parsed
 
   Assimp::Importer importer;
@@ -309,6 +328,9 @@ ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& o
 ModelFile readModelFromMemory(std::span<const std::byte> bytes, std::string_view formatHint,
                               const std::string& sourceName, const ModelOptions& options) {
   if (bytes.empty()) throw ModelError(sourceName, "the model is empty (0 bytes)");
+  requirePlyHeaderEnds(
+      {reinterpret_cast<const char*>(bytes.data()), std::min(bytes.size(), kPlyHeaderLimit)},
+      sourceName);
   fromOptions(options.transform, sourceName);
   Assimp::Importer importer;
   const std::string hint(formatHint);
