@@ -52,7 +52,9 @@ seeds=("$root"/scenes/*.json "$root"/tests/scenefile/data/*.json "$root"/fuzz/re
 if [[ "$target" == model_fuzzer ]]; then
   corpus="$build/model-corpus"
   artifacts="$build/model-artifacts"
-  dict=()
+  # Assimp 5.2 leaks on some malformed files (STL, PLY): leaks are not looked for here.
+  dict=(-detect_leaks=0)
+  export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
   seeds=("$root"/fuzz/models/*)
 fi
 shopt -u nullglob
@@ -64,7 +66,7 @@ echo "run-fuzzer.sh: ${#seeds[@]} seed files; running for ${seconds} s"
 
 status=0
 "$build/$target" "$corpus" \
-  "${dict[@]+"${dict[@]}"}" \
+  "${dict[@]}" \
   -max_total_time="$seconds" \
   -max_len=16384 \
   -timeout=10 \

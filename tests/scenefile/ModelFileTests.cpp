@@ -411,16 +411,18 @@ TEST_F(ModelFileTest, APlyWithoutItsFaceDataIsRefused) {
 TEST_F(ModelFileTest, APlyHeaderWithoutItsEndIsRefused) {
   // Assimp's PLY reader would never return on it (the model fuzzer found this).
   const auto file = write("endless.ply", "ply\nformat ascii 1.0\nelement vertex 3\n");
-  EXPECT_EQ(expectThrow(file, flat()),
-            file.string() + ": the PLY header does not end (no end_header in its first 38 bytes)");
-  const std::string text = "PLY\nformat ascii 1.0\n";
+  EXPECT_EQ(
+      expectThrow(file, flat()),
+      file.string() + ": the PLY header does not end (no end_header line in its first 38 bytes)");
+  // end_header must be the first word of a line.
+  const std::string text = "PLY\nformat ascii 1.0\n0 end_header\nend_header0\nend_header\v\n";
   try {
     readModelFromMemory({reinterpret_cast<const std::byte*>(text.data()), text.size()}, "ply",
                         "mem.ply", flat());
     ADD_FAILURE() << "no ModelError";
   } catch (const ModelError& e) {
     EXPECT_STREQ(e.what(),
-                 "mem.ply: the PLY header does not end (no end_header in its first 21 "
+                 "mem.ply: the PLY header does not end (no end_header line in its first 58 "
                  "bytes)");
   }
 }

@@ -281,16 +281,24 @@ const aiScene* postProcess(Assimp::Importer& importer, const aiScene* scene, uns
 /// How far into a PLY file its header must have ended.
 constexpr std::size_t kPlyHeaderLimit = std::size_t{1} << 20;
 
-/// Assimp 5.2's PLY reader never returns on a header without "end_header" (found by the model
-/// fuzzer): such a file is refused before Assimp sees it. start is the file's first bytes, up to
-/// kPlyHeaderLimit of them.
+/// Assimp 5.2's PLY reader never returns on a header without a line whose first word is
+/// "end_header"
+/// (found by the model fuzzer): such a file is refused before Assimp sees it. start is the
+/// file's first bytes, up to kPlyHeaderLimit of them.
 void requirePlyHeaderEnds(std::string_view start, const std::string& source) {
   const bool ply =
       start.size() >= 3 && (start.substr(0, 3) == "ply" || start.substr(0, 3) == "PLY");
-  if (ply && start.find("end_header") == std::string_view::npos)
-    throw ModelError(source, "the PLY header does not end (no end_header in its first " +
-                                 std::to_string(std::min(start.size(), kPlyHeaderLimit)) +
-                                 " bytes)");
+  if (!ply) return;
+  // A line whose first word is end_header: followed by a space, a tab, the line's end or the
+  // end of the data (Assimp takes no other white space there).
+  constexpr std::string_view kEnd = "\nend_header";
+  for (std::size_t at = start.find(kEnd); at != std::string_view::npos;
+       at = start.find(kEnd, at + 1)) {
+    const std::size_t next = at + kEnd.size();
+    if (next == start.size() || std::string_view(" \t\r\n").find(start[next]) != start.npos) return;
+  }
+  throw ModelError(source, "the PLY header does not end (no end_header line in its first " +
+                               std::to_string(start.size()) + " bytes)");
 }
 
 }  // namespace
