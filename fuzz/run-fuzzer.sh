@@ -46,14 +46,14 @@ cmake --build "$build" --target "$target" --parallel "$jobs" >/dev/null
 # Seeds: every scene file of the repository, and the inputs of past failures.
 corpus="$build/corpus"
 artifacts="$build/artifacts"
-dict=(-dict="$root/fuzz/scene.dict")
+extra=(-dict="$root/fuzz/scene.dict")
 shopt -s nullglob
 seeds=("$root"/scenes/*.json "$root"/tests/scenefile/data/*.json "$root"/fuzz/regressions/*)
 if [[ "$target" == model_fuzzer ]]; then
   corpus="$build/model-corpus"
   artifacts="$build/model-artifacts"
   # Assimp 5.2 leaks on some malformed files (STL, PLY): leaks are not looked for here.
-  dict=(-detect_leaks=0)
+  extra=(-detect_leaks=0)
   export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
   seeds=("$root"/fuzz/models/*)
 fi
@@ -66,7 +66,7 @@ echo "run-fuzzer.sh: ${#seeds[@]} seed files; running for ${seconds} s"
 
 status=0
 "$build/$target" "$corpus" \
-  "${dict[@]}" \
+  "${extra[@]}" \
   -max_total_time="$seconds" \
   -max_len=16384 \
   -timeout=10 \
