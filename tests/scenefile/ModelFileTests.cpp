@@ -192,6 +192,13 @@ TEST_F(ModelFileTest, DegenerateTrianglesAreDroppedAndCounted) {
   const ModelFile m = readModelFile(file, flat());
   EXPECT_EQ(m.droppedTriangles, 1u);
   EXPECT_EQ(m.groups.at(0).mesh.triangleCount(), 1u);
+  // Smooth: the normals computed for it do not make the file fatal either.
+  const ModelFile smooth = readModelFile(file, ModelOptions{});
+  EXPECT_EQ(smooth.droppedTriangles, 1u);
+  const TriangleMesh& mesh = smooth.groups.at(0).mesh;
+  ASSERT_EQ(mesh.triangleCount(), 1u);
+  ASSERT_TRUE(mesh.hasNormals());
+  for (std::uint32_t i : mesh.triangles()[0]) EXPECT_EQ(tup(mesh.normals()[i]), P(0, 0, 1));
 }
 
 TEST_F(ModelFileTest, PointsAndLinesAreIgnoredAndCounted) {

@@ -146,6 +146,30 @@ void collect(const aiScene& scene, const aiNode& node, const Affine& parent,
     if (node.mChildren[i] != nullptr) collect(scene, *node.mChildren[i], here, groups);
 }
 
+/// Vertex normals that are zero or not finite (GenSmoothNormals gives them to a vertex whose
+/// triangles all have zero area, which TriangleMesh then drops; some exporters write them) are
+/// replaced by the normal of the first triangle of non-zero area that uses the vertex, or by
+/// (0, 0, 1) for a vertex that no such triangle uses (no kept triangle is shaded with it).
+void repairNormals(const std::vector<Point>& vertices,
+                   const std::vector<TriangleMesh::Indices>& triangles,
+                   std::vector<Double3>& normals) {
+  std::vector<bool> bad(normals.size(), false);
+  std::size_t badCount = 0;
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    if (!normals[i].isFinite() || normals[i].isZero()) bad[i] = true, ++badCount;
+  if (badCount == 0) return;
+  for (const TriangleMesh::Indices& t : triangles) {
+    if (!(bad[t[0]] || bad[t[1]] || bad[t[2]])) continue;
+    const Double3 p0 = vertices[t[0]].xyz();
+    const Double3 n = (vertices[t[1]].xyz() - p0).cross(vertices[t[2]].xyz() - p0);
+    if (!n.isFinite() || n.isZero()) continue;
+    for (std::uint32_t i : t)
+      if (bad[i]) normals[i] = n, bad[i] = false;
+  }
+  for (std::size_t i = 0; i < normals.size(); ++i)
+    if (bad[i]) normals[i] = Double3(0, 0, 1);
+}
+
 std::string materialName(const aiScene& scene, unsigned index) {
   if (index >= scene.mNumMaterials || scene.mMaterials[index] == nullptr) return {};
   aiString name;
@@ -226,6 +250,7 @@ ModelFile toModel(const aiScene* scene, const Assimp::Importer& importer, const 
           triangles.push_back(t);
         }
       }
+      repairNormals(vertices, triangles, normals);
       TriangleMesh mesh(std::move(vertices), std::move(triangles), std::move(normals));
       model.droppedTriangles += mesh.droppedTriangles();
       model.groups.push_back({materialName(*scene, materialIndex), std::move(mesh)});

@@ -48,7 +48,9 @@ struct ModelTransform {
 /// What readModelFile does with the file's triangles.
 struct ModelOptions {
   /// Smooth: keep the file's vertex normals, or compute them (Assimp's GenSmoothNormals) when the
-  /// file has none. Flat (false): no vertex normals, even when the file has them.
+  /// file has none. Flat (false): no vertex normals, even when the file has them. A vertex
+  /// normal that is zero or not finite gets the normal of a triangle of non-zero area using the
+  /// vertex (Assimp computes such normals for vertices of zero-area triangles).
   bool smooth = true;
   ModelTransform transform;
 };
