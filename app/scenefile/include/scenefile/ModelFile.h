@@ -72,11 +72,14 @@ struct ModelFile {
 
 /// Reads the model file at file.
 /// @throws ModelError, the message "FILE: ..." for: a file that is missing or unreadable (the
-///         system's reason), a directory, a file Assimp cannot parse (its message), a model
-///         without triangles, a size TriangleMesh::requireFits refuses or that memory cannot
-///         hold, non-finite coordinates or an index out of range (TriangleMesh's message), a
-///         degenerate transform; and, in a build without Assimp, "reading model files needs
-///         Assimp: install libassimp-dev (scripts/deps.sh installs it)".
+///         system's reason), a directory, a file Assimp cannot parse or validate (its message,
+///         which names no line: an index out of range is "OBJ: vertex index out of range" or
+///         "Validation failed: aiMesh::mFaces[0]::mIndices[2] is out of range"), a PLY header
+///         without an end_header line (on which Assimp would never return), a face without
+///         indices, a model without triangles, a size TriangleMesh::requireFits refuses or that
+///         memory cannot hold, non-finite coordinates (TriangleMesh's message), a degenerate
+///         transform; and, in a build without Assimp, "reading model files needs Assimp:
+///         install libassimp-dev (scripts/deps.sh installs it)".
 ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options);
 
 /// The same for a model file's bytes in memory. formatHint is the file's extension without the
