@@ -14,9 +14,11 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # rt_usage
 
 # What the build needs: compiler and build tool, CMake, GoogleTest and GoogleMock, stb (PNG
-# output), nlohmann-json (scene files) and CLI11 (rt's command line). The CMake files name the
-# same packages when one is missing.
-packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev)
+# output), nlohmann-json (scene files), CLI11 (rt's command line) and Assimp (model files; the
+# build works without it, and then cannot read them). The CMake files name the same packages
+# when one is missing.
+packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev
+          libassimp-dev)
 
 dry_run=0
 pretend=()

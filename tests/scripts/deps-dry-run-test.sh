@@ -44,7 +44,7 @@ check() {
   fi
 }
 
-all="cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev"
+all="cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev libassimp-dev"
 # TC01: a dry run with nothing missing says so, naming what it checked (once it printed nothing)
 STUB_MISSING="" check "TC01 dry run, nothing missing" 0 \
   "deps.sh: dry run: nothing missing ($all)" --dry-run
@@ -62,5 +62,8 @@ STUB_MISSING="" check "TC05 dry run, pretend missing" 0 \
 # TC06: the test command's extras (scripts/test-all.sh): matplotlib missing is named alone
 STUB_MISSING="python3-matplotlib" check "TC06 dry run, the test command's extras" 0 \
   "deps.sh: dry run: missing: python3-matplotlib" --dry-run python3 python3-matplotlib
+# TC07: the model files' library (Assimp) is checked too, and named when missing
+STUB_MISSING="libassimp-dev" check "TC07 dry run, Assimp missing" 0 \
+  "deps.sh: dry run: missing: libassimp-dev" --dry-run
 
 ((failures == 0))
