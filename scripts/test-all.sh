@@ -4,8 +4,8 @@
 #   scripts/test-all.sh [CTEST_OPTION]...
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
-# (scripts/deps.sh, and python3 with matplotlib for the workflow tests), configures the release preset, builds
-# all targets and runs ctest with output on failure. Options go to ctest (for example -L stage03,
+# (scripts/deps.sh, and python3 with matplotlib for the workflow tests), configures the release
+# preset, builds all targets and runs ctest with output on failure. Options go to ctest (for example -L stage03,
 # or -R Sphere); a selection that matches no test is an error (--no-tests=error), not a pass. The
 # last line printed is ctest's summary ("100% tests passed, 0 tests failed out of N"); the exit
 # code is ctest's. Set RT_BUILD_DIR to build somewhere other than build/release, RT_JOBS to change
