@@ -47,4 +47,14 @@ std::optional<Aabb> boundingBox(const Geometry& g) noexcept {
   return std::visit([](const auto& shape) -> std::optional<Aabb> { return boundingBox(shape); }, g);
 }
 
+Aabb boundingBox(const TriangleMesh& mesh, std::size_t t) noexcept {
+  return boxOfPoints(mesh.corners(t));
+}
+
+std::optional<Aabb> boundingBox(const Primitives& primitives, std::uint32_t primitive) noexcept {
+  if (primitives.isShape(primitive)) return boundingBox(primitives.shapes()[primitive]);
+  const MeshTriangle m = primitives.meshTriangle(primitive);
+  return boundingBox(*primitives.meshes()[m.mesh].mesh, m.triangle);
+}
+
 }  // namespace rt

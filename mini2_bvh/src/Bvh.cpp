@@ -73,7 +73,7 @@ bool Bvh::forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& f) cons
   } else {
     for (std::uint32_t k = leaf.offset; k < end; ++k) {
       const std::uint32_t shape = otherShapes_[k];
-      if (!f(intersectRoots(shapes_[shape], ray), shape)) return false;
+      if (!f(primitives_.roots(shape, ray), shape)) return false;
     }
   }
   return true;
@@ -83,7 +83,7 @@ std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Bvh::closestHit, unbounded shapes, then the walk, bound min(limit, t)
   NearestHit nearest(tMax);
-  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest), visited = 0;
+  std::uint64_t tests = offerUnbounded(unbounded_, primitives_, ray, nearest), visited = 0;
   const double limit = slabLimit(tMax);
   traverse(
       ray, [&] { return std::min(limit, nearest.t()); },
@@ -109,7 +109,7 @@ bool Bvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
   bool complete = true;
   for (std::size_t k = 0; complete && k < unbounded_.size(); ++k) {
     ++tests;
-    complete = visitHits(intersectRoots(shapes_[unbounded_[k]], ray), unbounded_[k], tMax, visit);
+    complete = visitHits(primitives_.roots(unbounded_[k], ray), unbounded_[k], tMax, visit);
   }
   if (complete) {
     const double limit = slabLimit(tMax);

@@ -331,20 +331,21 @@ class Builder {
 
 }  // namespace
 
-Bvh::Bvh(std::span<const Geometry> shapes, BvhBuildOptions options) : shapes_(shapes) {
+Bvh::Bvh(Primitives primitives, BvhBuildOptions options) : primitives_(primitives) {
+  const std::span<const Geometry> shapes = primitives.shapes();
   std::vector<BuildRecord> records;
-  records.reserve(shapes.size());
+  records.reserve(primitives.size());
   std::size_t sphereCount = 0;
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+  for (std::uint32_t i = 0; i < primitives.size(); ++i) {
     // A shape without a box, or whose box does not fit in floats (coordinates beyond ±3.4e38),
     // is tested on its own, like a plane.
-    const std::optional<Aabb> box = boundingBox(shapes[i]);
+    const std::optional<Aabb> box = boundingBox(primitives, i);
     const FloatBox stored = box ? conservativeBox(*box) : FloatBox::empty();
     if (!box || !isFinite(stored)) {
       unbounded_.push_back(i);
       continue;
     }
-    const bool sphere = std::holds_alternative<Sphere>(shapes[i]);
+    const bool sphere = primitives.isShape(i) && std::holds_alternative<Sphere>(shapes[i]);
     records.push_back(BuildRecord{stored, i, sphere});
     sphereCount += sphere ? 1 : 0;
   }

@@ -9,9 +9,10 @@
 
 namespace rt {
 
-Cbr::Cbr(std::span<const Geometry> shapes) : shapes_(shapes) {
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    if (const std::optional<Aabb> box = boundingBox(shapes[i]))
+Cbr::Cbr(Primitives primitives) : primitives_(primitives) {
+  bounded_.reserve(primitives.size());
+  for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+    if (const std::optional<Aabb> box = boundingBox(primitives, i))
       bounded_.push_back(BoxedShape{conservativeBox(*box), i});
     else
       unbounded_.push_back(i);
@@ -22,7 +23,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Cbr::closestHit, a shape's exact test only when its box is hit
   NearestHit nearest(tMax);
-  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest);
+  std::uint64_t tests = offerUnbounded(unbounded_, primitives_, ray, nearest);
   const SlabRay slab(ray);
   const double limit = slabLimit(tMax);
   for (const BoxedShape& s : bounded_) {
@@ -30,7 +31,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
     // it can (a smaller index), so that box is still opened.
     double entry;
     if (!slabHit(slab, s.box, std::min(limit, nearest.t()), entry)) continue;
-    nearest.offer(intersectRoots(shapes_[s.geometry], ray), s.geometry);
+    nearest.offer(primitives_.roots(s.geometry, ray), s.geometry);
     ++tests;
   }
   addQueryCounts(counts, tests, bounded_.size());
@@ -41,7 +42,7 @@ std::optional<Hit> Cbr::closestHit(const Ray& ray, double tMax,
 bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Cbr::forEachHit, visit the hits of the shapes whose box is hit
   std::uint64_t tests = 0;
-  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
+  bool complete = visitUnbounded(unbounded_, primitives_, ray, tMax, visit, tests);
   const SlabRay slab(ray);
   const double limit = slabLimit(tMax);
   std::uint64_t boxes = 0;
@@ -51,7 +52,7 @@ bool Cbr::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts*
     double entry;
     if (!slabHit(slab, s.box, limit, entry)) continue;
     ++tests;
-    complete = visitHits(intersectRoots(shapes_[s.geometry], ray), s.geometry, tMax, visit);
+    complete = visitHits(primitives_.roots(s.geometry, ray), s.geometry, tMax, visit);
   }
   addQueryCounts(counts, tests, boxes);
   return complete;

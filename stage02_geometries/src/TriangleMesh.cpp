@@ -108,6 +108,18 @@ Vector TriangleMesh::shadingNormal(std::size_t t, double b1, double b2) const no
   return Vector::unchecked(blend).normalized();
 }
 
+Vector TriangleMesh::normalAt(std::size_t t, const Point& p) const noexcept {
+  if (normals_.empty()) return flatNormal(t);
+  const Indices& i = triangles_[t];
+  const Double3& v0 = vertices_[i[0]].xyz();
+  const Double3 e1 = vertices_[i[1]].xyz() - v0;
+  const Double3 e2 = vertices_[i[2]].xyz() - v0;
+  const Double3 d = p.xyz() - v0;
+  const Double3 n = e1.cross(e2);
+  const double nn = n.dot(n);  // > 0: the constructor dropped the triangles whose n is zero
+  return shadingNormal(t, d.cross(e2).dot(n) / nn, e1.cross(d).dot(n) / nn);
+}
+
 std::size_t TriangleMesh::memoryBytes() const {
   return vertices_.capacity() * sizeof(Point) + triangles_.capacity() * sizeof(Indices) +
          normals_.capacity() * sizeof(Vector);

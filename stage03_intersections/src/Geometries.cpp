@@ -1,39 +1,86 @@
 #include "intersections/Geometries.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "intersections/HitRules.h"
 
 namespace rt {
 
 std::uint32_t Geometries::add(Geometry shape) {
+  if (primitiveCount() == MAX_PRIMITIVES)
+    throw std::length_error("Geometries: no room for another shape (" + std::to_string(size()) +
+                            " shapes and " + std::to_string(triangles_) +
+                            " mesh triangles, at most " + std::to_string(MAX_PRIMITIVES) + ")");
   shapes_.push_back(std::move(shape));
   return static_cast<std::uint32_t>(shapes_.size() - 1);
 }
 
+std::uint32_t Geometries::addMesh(std::shared_ptr<const TriangleMesh> mesh) {
+  if (mesh == nullptr) throw std::invalid_argument("Geometries::addMesh: the mesh is null");
+  const std::uint64_t after = std::uint64_t{primitiveCount()} + mesh->triangleCount();
+  if (after > MAX_PRIMITIVES)
+    throw std::length_error("Geometries::addMesh: a mesh of " +
+                            std::to_string(mesh->triangleCount()) + " triangles would make " +
+                            std::to_string(after) + " primitives, at most " +
+                            std::to_string(MAX_PRIMITIVES));
+  meshes_.push_back(PlacedMesh{std::move(mesh), triangles_});
+  triangles_ += static_cast<std::uint32_t>(meshes_.back().mesh->triangleCount());
+  return static_cast<std::uint32_t>(meshes_.size() - 1);
+}
+
+Vector Geometries::hitNormal(std::uint32_t primitive, const Point& p,
+                             const Vector& fallback) const noexcept {
+  if (primitive < size()) return rt::hitNormal(shapes_[primitive], p, fallback);
+  const MeshTriangle m = primitives().meshTriangle(primitive);
+  return meshes_[m.mesh].mesh->normalAt(m.triangle, p);
+}
+
+Vector Geometries::normalAt(std::uint32_t primitive, const Point& p) const {
+  if (primitive < size()) return rt::normalAt(shapes_[primitive], p);
+  const MeshTriangle m = primitives().meshTriangle(primitive);
+  return meshes_[m.mesh].mesh->normalAt(m.triangle, p);
+}
+
 std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
                                           QueryCounts* counts) const noexcept {
-  // BEGIN SOLUTION: hint: Geometries::closestHit, the smallest (t, index) within tMax (HitRules.h)
   NearestHit nearest(tMax);
+  // BEGIN SOLUTION: hint: Geometries::closestHit, offer each shape's roots: the smallest (t, index) within tMax wins (HitRules.h)
   for (std::uint32_t i = 0; i < shapes_.size(); ++i)
     nearest.offer(intersectRoots(shapes_[i], ray), i);
   if (counts != nullptr) counts->shapeTests += shapes_.size();
-  return nearest.hit();
   // END SOLUTION
+  // The meshes' triangles, by the same rule, numbered after the shapes.
+  std::uint32_t primitive = size();
+  for (const PlacedMesh& placed : meshes_)
+    for (std::size_t t = 0; t < placed.mesh->triangleCount(); ++t)
+      nearest.offer(intersectRoots(*placed.mesh, t, ray), primitive++);
+  if (counts != nullptr) counts->shapeTests += triangles_;
+  return nearest.hit();
 }
 
 bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                             QueryCounts* counts) const {
-  // BEGIN SOLUTION: hint: Geometries::forEachHit, visit each hit within tMax until false
   std::uint32_t tested = 0;
   bool complete = true;
+  // BEGIN SOLUTION: hint: Geometries::forEachHit, visit each shape's hits within tMax until visit says false
   for (std::uint32_t i = 0; i < shapes_.size() && complete; ++i) {
     ++tested;
     complete = visitHits(intersectRoots(shapes_[i], ray), i, tMax, visit);
   }
+  // END SOLUTION
+  // The meshes' triangles, by the same rule, numbered after the shapes.
+  std::uint32_t primitive = size();
+  for (std::size_t m = 0; m < meshes_.size() && complete; ++m) {
+    const TriangleMesh& mesh = *meshes_[m].mesh;
+    for (std::size_t t = 0; t < mesh.triangleCount() && complete; ++t) {
+      ++tested;
+      complete = visitHits(intersectRoots(mesh, t, ray), primitive++, tMax, visit);
+    }
+  }
   if (counts != nullptr) counts->shapeTests += tested;
   return complete;
-  // END SOLUTION
 }
 
 std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,

@@ -1,6 +1,7 @@
 #include "intersections/Intersect.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -116,11 +117,13 @@ Roots intersectRoots(const Plane& p, const Ray& ray) noexcept {
 }
 
 namespace {
-/// A flat convex shape (triangle or polygon): its plane's root, kept when the ray passes inside.
-Roots flatRoots(const Plane& plane, std::span<const Point> vertices, const Ray& ray) noexcept {
+/// A flat convex shape (triangle, polygon, mesh triangle): the root of its plane through q with
+/// unit normal n, kept when the ray passes inside.
+Roots flatRoots(const Double3& q, const Double3& n, std::span<const Point> vertices,
+                const Ray& ray) noexcept {
   // BEGIN SOLUTION: hint: flatRoots, the plane's root when the ray passesInside
   Roots roots;
-  const double tHit = planeT(plane.point().xyz(), plane.normal().xyz(), ray);
+  const double tHit = planeT(q, n, ray);
   if (alignZero(tHit) > 0 && passesInside(vertices, ray)) roots.add(tHit);
   return roots;
   // END SOLUTION
@@ -128,11 +131,17 @@ Roots flatRoots(const Plane& plane, std::span<const Point> vertices, const Ray& 
 }  // namespace
 
 Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept {
-  return flatRoots(t.plane(), t.vertices(), ray);
+  return flatRoots(t.plane().point().xyz(), t.plane().normal().xyz(), t.vertices(), ray);
 }
 
 Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept {
-  return flatRoots(p.plane(), p.vertices(), ray);
+  return flatRoots(p.plane().point().xyz(), p.plane().normal().xyz(), p.vertices(), ray);
+}
+
+Roots intersectRoots(const TriangleMesh& mesh, std::size_t t, const Ray& ray) noexcept {
+  // A Triangle of these corners has the plane (first corner, flatNormal's bits).
+  const std::array<Point, 3> corners = mesh.corners(t);
+  return flatRoots(corners[0].xyz(), mesh.flatNormal(t).xyz(), corners, ray);
 }
 
 namespace {

@@ -23,7 +23,7 @@ Color NormalsTracer::traceRay(const Ray& ray, SampleContext& ctx) const {
       intersector_.closestHit(ray, INFINITE_DISTANCE, &ctx.counts.queries);
   if (!hit) return scene_.background;
   const Point p = ray.point(hit->t);
-  return directionColor(hitNormal(scene_.geometries[hit->geometry], p, -ray.direction()));
+  return directionColor(scene_.geometries.hitNormal(hit->geometry, p, -ray.direction()));
 }
 
 // Every hit with t > 0 counted, as the course's findIntersections collects them, but through the

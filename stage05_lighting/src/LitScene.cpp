@@ -7,8 +7,9 @@ namespace rt {
 
 LitScene::LitScene(const Scene& base)
     : Scene(base),
-      appearances(base.geometries.empty() ? 0 : 1),
-      appearanceIndex(base.geometries.size(), 0) {}
+      appearances(base.geometries.primitiveCount() == 0 ? 0 : 1),
+      appearanceIndex(base.geometries.size(), 0),
+      meshAppearance(base.geometries.meshes().size(), 0) {}
 
 std::uint32_t LitScene::addAppearance(const Color& emission, const Material& material) {
   material.validate();
@@ -30,6 +31,18 @@ std::uint32_t LitScene::add(Geometry shape, const Color& emission, const Materia
   return add(std::move(shape), addAppearance(emission, material));
 }
 
+std::uint32_t LitScene::addMesh(std::shared_ptr<const TriangleMesh> mesh,
+                                std::uint32_t appearance) {
+  if (appearance >= appearances.size()) {
+    throw std::out_of_range("LitScene::addMesh: appearance " + std::to_string(appearance) +
+                            " does not exist (the table has " + std::to_string(appearances.size()) +
+                            " rows)");
+  }
+  const std::uint32_t index = geometries.addMesh(std::move(mesh));
+  meshAppearance.push_back(appearance);
+  return index;
+}
+
 LitScene& LitScene::addLight(LightSource light) {
   rt::validate(light);
   lights.push_back(std::move(light));
@@ -46,6 +59,18 @@ void LitScene::validate() const {
     if (appearanceIndex[i] >= appearances.size()) {
       throw std::logic_error("LitScene: geometry " + std::to_string(i) + " uses appearance " +
                              std::to_string(appearanceIndex[i]) + " but the table has " +
+                             std::to_string(appearances.size()) + " rows");
+    }
+  }
+  if (meshAppearance.size() != geometries.meshes().size()) {
+    throw std::logic_error("LitScene: " + std::to_string(geometries.meshes().size()) +
+                           " meshes but " + std::to_string(meshAppearance.size()) +
+                           " mesh appearance indices; every mesh needs one (use LitScene::addMesh)");
+  }
+  for (std::size_t m = 0; m < meshAppearance.size(); ++m) {
+    if (meshAppearance[m] >= appearances.size()) {
+      throw std::logic_error("LitScene: mesh " + std::to_string(m) + " uses appearance " +
+                             std::to_string(meshAppearance[m]) + " but the table has " +
                              std::to_string(appearances.size()) + " rows");
     }
   }

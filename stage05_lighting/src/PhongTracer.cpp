@@ -54,8 +54,8 @@ PhongTracer::HitContext PhongTracer::makeContext(const Hit& hit, const Ray& ray)
   // BEGIN SOLUTION: hint: makeContext, the hit's point, normal, v, n.v and appearance row
   const Point p = ray.point(hit.t);
   const Vector& v = ray.direction();
-  const Vector n = hitNormal(litScene_.geometries[hit.geometry], p, -v);
-  const std::uint32_t row = litScene_.appearanceIndex[hit.geometry];
+  const Vector n = litScene_.geometries.hitNormal(hit.geometry, p, -v);
+  const std::uint32_t row = litScene_.rowOf(hit.geometry);
   return HitContext{hit.geometry, p, n, v, alignZero(n.dot(v)), row, &litScene_.appearances[row]};
   // END SOLUTION
 }

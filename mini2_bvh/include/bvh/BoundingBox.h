@@ -12,6 +12,8 @@
 
 #include "bvh/Aabb.h"
 #include "geometries/Geometry.h"
+#include "geometries/TriangleMesh.h"
+#include "intersections/Primitives.h"
 
 namespace rt {
 
@@ -32,5 +34,11 @@ std::optional<Aabb> boundingBox(const Tube& t) noexcept;
 
 /// The box of any shape; nullopt for the unbounded ones (planes and tubes).
 std::optional<Aabb> boundingBox(const Geometry& g) noexcept;
+
+/// Triangle t of a mesh: the minimum and maximum of its corners, per axis (the box of a
+/// `Triangle` of the same corners).
+Aabb boundingBox(const TriangleMesh& mesh, std::size_t t) noexcept;
+/// The box of a primitive: its shape's (nullopt for an unbounded one), or its mesh triangle's.
+std::optional<Aabb> boundingBox(const Primitives& primitives, std::uint32_t primitive) noexcept;
 
 }  // namespace rt

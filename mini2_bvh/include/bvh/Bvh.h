@@ -18,6 +18,7 @@
 #include "geometries/Geometry.h"
 #include "intersections/Geometries.h"
 #include "intersections/Intersectable.h"
+#include "intersections/Primitives.h"
 
 namespace rt {
 
@@ -53,13 +54,16 @@ class Bvh final : public Intersectable {
   /// Capacity of the traversal stack (node indices), on the stack of the calling thread.
   static constexpr int STACK_SIZE = 128;
 
-  /// Builds the hierarchy.
-  /// @param shapes viewed, not copied (as by a std::span), except the spheres, which the tree
-  ///        keeps compactly: the shapes must outlive the Bvh and stay unchanged. Hit indices are
-  ///        indices into shapes.
-  explicit Bvh(std::span<const Geometry> shapes, BvhBuildOptions options = {});
+  /// Builds the hierarchy over shapes and mesh triangles alike (a mesh's triangles are
+  /// primitives of the tree one by one).
+  /// @param primitives viewed, not copied (as by a std::span), except the spheres, which the tree
+  ///        keeps compactly: the shapes and meshes must outlive the Bvh and stay unchanged. Hit
+  ///        indices are the primitives' numbers.
+  explicit Bvh(Primitives primitives, BvhBuildOptions options = {});
+  explicit Bvh(std::span<const Geometry> shapes, BvhBuildOptions options = {})
+      : Bvh(Primitives(shapes), options) {}
   explicit Bvh(const Geometries& geometries, BvhBuildOptions options = {})
-      : Bvh(geometries.shapes(), options) {}
+      : Bvh(geometries.primitives(), options) {}
   Bvh(Geometries&&, BvhBuildOptions = {}) = delete;  // would view a temporary
 
   /// The same answer as Geometries::closestHit over the same shapes, bit for bit. Counts every
@@ -101,12 +105,12 @@ class Bvh final : public Intersectable {
   template <typename F>
   bool forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& f) const;
 
-  std::span<const Geometry> shapes_;
+  Primitives primitives_;
   std::vector<BvhNode> nodes_;
   std::vector<CompactSphere> spheres_;       ///< the sphere leaves' primitives, in leaf order
-  std::vector<std::uint32_t> sphereShapes_;  ///< their indices in shapes_
-  std::vector<std::uint32_t> otherShapes_;   ///< the other leaves' primitives: indices in shapes_
-  std::vector<std::uint32_t> unbounded_;     ///< planes and tubes: indices in shapes_
+  std::vector<std::uint32_t> sphereShapes_;  ///< their numbers among the primitives
+  std::vector<std::uint32_t> otherShapes_;   ///< the other leaves' primitives (mesh triangles too)
+  std::vector<std::uint32_t> unbounded_;     ///< planes and tubes (and the like): their numbers
   int depth_ = 0;
 };
 

@@ -14,15 +14,17 @@
 #include "geometries/Geometry.h"
 #include "intersections/Geometries.h"
 #include "intersections/Intersectable.h"
+#include "intersections/Primitives.h"
 
 namespace rt {
 
 class Cbr final : public Intersectable {
  public:
-  /// @param shapes viewed, not copied (as by a std::span): they must outlive the Cbr and stay
-  ///        unchanged. Hit indices are indices into shapes.
-  explicit Cbr(std::span<const Geometry> shapes);
-  explicit Cbr(const Geometries& geometries) : Cbr(geometries.shapes()) {}
+  /// @param primitives viewed, not copied (as by a std::span): the shapes and meshes must outlive
+  ///        the Cbr and stay unchanged. Hit indices are the primitives' numbers.
+  explicit Cbr(Primitives primitives);
+  explicit Cbr(std::span<const Geometry> shapes) : Cbr(Primitives(shapes)) {}
+  explicit Cbr(const Geometries& geometries) : Cbr(geometries.primitives()) {}
   Cbr(Geometries&&) = delete;  // would view a temporary
 
   /// The same answer as Geometries::closestHit over the same shapes, bit for bit. Counts each
@@ -39,9 +41,9 @@ class Cbr final : public Intersectable {
     std::uint32_t geometry;
   };
 
-  std::span<const Geometry> shapes_;
+  Primitives primitives_;
   std::vector<std::uint32_t> unbounded_;  ///< planes and tubes, by index
-  std::vector<BoxedShape> bounded_;       ///< the others with their boxes, by index
+  std::vector<BoxedShape> bounded_;       ///< the others (mesh triangles too) with their boxes
 };
 
 }  // namespace rt

@@ -1,7 +1,7 @@
 #pragma once
 /// @file UnboundedShapes.h
-/// What every acceleration structure does first: the shapes it cannot bound (planes, tubes, shapes
-/// beyond the float range) stay outside it, and a query tests them one by one before it walks the
+/// What every acceleration structure does first: the primitives it cannot bound (planes, tubes,
+/// shapes or mesh triangles beyond the float range) stay outside it, and a query tests them one by one before it walks the
 /// boxes, the tree or the cells. CBR, the BVH and the grid share these steps, so that the three
 /// answer the unbounded shapes exactly alike, and count them alike.
 
@@ -12,6 +12,7 @@
 #include "intersections/HitRules.h"
 #include "intersections/Intersect.h"
 #include "intersections/Intersectable.h"
+#include "intersections/Primitives.h"
 #include "primitives/Ray.h"
 
 namespace rt {
@@ -19,9 +20,9 @@ namespace rt {
 /// The closest-hit query's first step: offers each unbounded shape's hits to nearest.
 /// @returns the exact tests made (one per unbounded shape).
 inline std::uint64_t offerUnbounded(std::span<const std::uint32_t> unbounded,
-                                    std::span<const Geometry> shapes, const Ray& ray,
+                                    const Primitives& primitives, const Ray& ray,
                                     NearestHit& nearest) noexcept {
-  for (const std::uint32_t i : unbounded) nearest.offer(intersectRoots(shapes[i], ray), i);
+  for (const std::uint32_t i : unbounded) nearest.offer(primitives.roots(i, ray), i);
   return unbounded.size();
 }
 
@@ -29,12 +30,12 @@ inline std::uint64_t offerUnbounded(std::span<const std::uint32_t> unbounded,
 /// says stop, adding the exact tests made to tests.
 /// @returns false when visit stopped the query.
 inline bool visitUnbounded(std::span<const std::uint32_t> unbounded,
-                           std::span<const Geometry> shapes, const Ray& ray, double tMax,
+                           const Primitives& primitives, const Ray& ray, double tMax,
                            HitVisitor visit, std::uint64_t& tests) {
   bool complete = true;
   for (std::size_t k = 0; complete && k < unbounded.size(); ++k) {
     ++tests;
-    complete = visitHits(intersectRoots(shapes[unbounded[k]], ray), unbounded[k], tMax, visit);
+    complete = visitHits(primitives.roots(unbounded[k], ray), unbounded[k], tMax, visit);
   }
   return complete;
 }

@@ -51,6 +51,7 @@
 #include "geometries/Geometry.h"
 #include "intersections/Geometries.h"
 #include "intersections/Intersectable.h"
+#include "intersections/Primitives.h"
 
 namespace rt {
 
@@ -67,13 +68,14 @@ class Grid final : public Intersectable {
   /// face bits above.
   static constexpr std::uint32_t MAX_SHAPES = 1u << 26;
 
-  /// Builds the grid.
-  /// @param shapes viewed, not copied (as by a std::span): they must outlive the Grid and stay
-  ///        unchanged. Hit indices are indices into shapes.
-  /// @throws std::length_error when a bounded shape's index is MAX_SHAPES or more, or the
+  /// Builds the grid over shapes and mesh triangles alike (each triangle listed in its cells).
+  /// @param primitives viewed, not copied (as by a std::span): the shapes and meshes must outlive
+  ///        the Grid and stay unchanged. Hit indices are the primitives' numbers.
+  /// @throws std::length_error when a bounded primitive's number is MAX_SHAPES or more, or the
   ///         entries outnumber 2^32.
-  explicit Grid(std::span<const Geometry> shapes);
-  explicit Grid(const Geometries& geometries) : Grid(geometries.shapes()) {}
+  explicit Grid(Primitives primitives);
+  explicit Grid(std::span<const Geometry> shapes) : Grid(Primitives(shapes)) {}
+  explicit Grid(const Geometries& geometries) : Grid(geometries.primitives()) {}
   Grid(Geometries&&) = delete;  // would view a temporary
 
   /// The same answer as Geometries::closestHit over the same shapes, bit for bit. Counts every
@@ -117,7 +119,7 @@ class Grid final : public Intersectable {
   template <typename F>
   bool forEachNewShape(std::uint32_t cell, int axis, bool up, const F& f) const;
 
-  std::span<const Geometry> shapes_;
+  Primitives primitives_;
   Aabb box_;
   std::array<int, 3> n_{0, 0, 0};
   std::array<double, 3> width_{0, 0, 0};     ///< a cell's width per axis

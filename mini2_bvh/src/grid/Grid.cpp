@@ -65,11 +65,11 @@ bool isFinite(const FloatBox& b) noexcept {
 
 }  // namespace
 
-Grid::Grid(std::span<const Geometry> shapes) : shapes_(shapes) {
+Grid::Grid(Primitives primitives) : primitives_(primitives) {
   std::vector<std::uint32_t> bounded;
   std::vector<Aabb> boxes;
-  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
-    const std::optional<Aabb> exact = boundingBox(shapes[i]);
+  for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+    const std::optional<Aabb> exact = boundingBox(primitives, i);
     const FloatBox stored = exact ? conservativeBox(*exact) : FloatBox::empty();
     if (!exact || !isFinite(stored)) {
       unbounded_.push_back(i);
@@ -82,7 +82,7 @@ Grid::Grid(std::span<const Geometry> shapes) : shapes_(shapes) {
   if (bounded.empty()) return;
   if (bounded.back() >= MAX_SHAPES)
     throw std::length_error("Grid: bounded shape " + std::to_string(bounded.back()) +
-                            " of the scene's " + std::to_string(shapes.size()) +
+                            " of the scene's " + std::to_string(primitives.size()) +
                             ": an entry holds indices below " + std::to_string(MAX_SHAPES));
 
   n_ = resolutionFor(box_.extent(), bounded.size());
@@ -248,7 +248,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
                                     QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Grid::closestHit, unbounded shapes, then the walk until the best hit
   NearestHit nearest(tMax);
-  std::uint64_t tests = offerUnbounded(unbounded_, shapes_, ray, nearest), visited = 0;
+  std::uint64_t tests = offerUnbounded(unbounded_, primitives_, ray, nearest), visited = 0;
   const double limit = slabLimit(tMax);
   // A cell that begins strictly after the best hit cannot hold a better one; one that begins
   // exactly at it can (a smaller index), so the walk goes on into it.
@@ -257,7 +257,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
       [&](std::uint32_t cell, int axis, bool up) {
         return forEachNewShape(cell, axis, up, [&](std::uint32_t shape) {
           ++tests;
-          nearest.offer(intersectRoots(shapes_[shape], ray), shape);
+          nearest.offer(primitives_.roots(shape, ray), shape);
           return true;
         });
       },
@@ -270,7 +270,7 @@ std::optional<Hit> Grid::closestHit(const Ray& ray, double tMax,
 bool Grid::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts* counts) const {
   // BEGIN SOLUTION: hint: Grid::forEachHit, every hit within tMax until the visitor says stop
   std::uint64_t tests = 0, visited = 0;
-  bool complete = visitUnbounded(unbounded_, shapes_, ray, tMax, visit, tests);
+  bool complete = visitUnbounded(unbounded_, primitives_, ray, tMax, visit, tests);
   if (complete) {
     const double limit = slabLimit(tMax);
     complete = walk(
@@ -278,7 +278,7 @@ bool Grid::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCounts
         [&](std::uint32_t cell, int axis, bool up) {
           return forEachNewShape(cell, axis, up, [&](std::uint32_t shape) {
             ++tests;
-            return visitHits(intersectRoots(shapes_[shape], ray), shape, tMax, visit);
+            return visitHits(primitives_.roots(shape, ray), shape, tMax, visit);
           });
         },
         visited);

@@ -102,6 +102,15 @@ class TriangleMesh {
   /// is the exact zero vector (opposite vertex normals).
   Vector shadingNormal(std::size_t t, double b1, double b2) const noexcept;
 
+  /// The shading normal at point p of triangle t, p being a hit point (on the triangle, up to
+  /// rounding): p's barycentric coordinates, from the areas of the sub-triangles it makes,
+  ///
+  ///     n = (v1 - v0) x (v2 - v0),  b1 = ((p - v0) x (v2 - v0))·n / n·n,
+  ///     b2 = ((v1 - v0) x (p - v0))·n / n·n,
+  ///
+  /// given to shadingNormal. flatNormal(t) for a mesh without normals (nothing is computed then).
+  Vector normalAt(std::size_t t, const Point& p) const noexcept;
+
   /// The bytes of the arrays as allocated (their capacities): what the mesh costs in memory.
   std::size_t memoryBytes() const;
 

@@ -13,7 +13,10 @@
 #include <optional>
 #include <vector>
 
+#include <cstddef>
+
 #include "geometries/Geometry.h"
+#include "geometries/TriangleMesh.h"
 #include "primitives/Ray.h"
 #include "primitives/Util.h"
 
@@ -55,6 +58,11 @@ Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept;
 Roots intersectRoots(const Tube& t, const Ray& ray) noexcept;
 Roots intersectRoots(const Cylinder& c, const Ray& ray) noexcept;
 Roots intersectRoots(const Geometry& g, const Ray& ray) noexcept;
+/// Triangle t of a mesh: the roots a `Triangle` of the same three corners gives, bit for bit (the
+/// same plane point, the mesh's flatNormal, the same inside test), computed from the shared
+/// vertices. The unit normal is worked out per test (a square root) rather than stored, which
+/// would cost 24 bytes per triangle.
+Roots intersectRoots(const TriangleMesh& mesh, std::size_t t, const Ray& ray) noexcept;
 
 /// The course's findIntersections: every crossing with t in (0, maxDistance], sorted by
 /// distance from the ray's head; empty when there is none (the course returns null).
