@@ -23,7 +23,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <thread>
 #include <utility>
 #include <variant>
 
@@ -88,7 +90,12 @@ struct Binning {
 struct Bin {
   FloatBox box;
   std::uint32_t count;
-  double cost;  ///< the sum of its records' testCost
+  std::uint32_t spheres;  ///< of count: the records of cost 1, the others cost SHAPE_COST
+
+  /// The sum of its records' testCost (exact: integers in a double).
+  double cost() const noexcept {
+    return spheres + Bvh::SHAPE_COST * static_cast<double>(count - spheres);
+  }
 };
 
 /// Where to split a range, or that it becomes a leaf; with the bounds of both sides.
@@ -110,14 +117,121 @@ class Builder {
         sphereShapes_(sphereShapes),
         otherShapes_(otherShapes) {}
 
-  /// Builds the tree over every record; returns the deepest leaf's depth.
-  int build() {
+  /// Builds the tree over every record on up to `threads` threads; returns the deepest leaf's
+  /// depth. The tree is the same, node for node, whatever the number of threads:
+  ///  1. the top levels are split here, on the calling thread, down to ranges of at most
+  ///     `grain` records, into a skeleton whose leaves are subtrees still to build (tasks);
+  ///  2. each task is built by a Builder of its own into arrays of its own (offsets relative
+  ///     to them), the threads taking the tasks in turn; the tasks' ranges of records are
+  ///     disjoint, so no two threads touch the same record;
+  ///  3. the skeleton is written depth-first, each task's nodes and primitives appended where
+  ///     a one-thread build writes them, their offsets moved by what comes before.
+  /// Every split is chosen from the records of its range alone, in the same order either way,
+  /// so steps 1 and 2 choose exactly the splits of a one-thread build (BvhBuildTests checks it).
+  int build(int threads) {
     const auto n = static_cast<std::uint32_t>(records_.size());
-    buildNode(0, n, 0, boundsOf(0, n));
+    const Bounds all = boundsOf(0, n);
+    if (threads <= 1 || n < 2 * PARALLEL_GRAIN_MIN) {
+      buildNode(0, n, 0, all);
+      return maxDepth_;
+    }
+    const std::uint32_t grain = std::max<std::uint32_t>(PARALLEL_GRAIN_MIN, n / TASKS_PER_BUILD);
+    std::vector<SkeletonNode> skeleton;
+    std::vector<Task> tasks;
+    split(0, n, 0, all, grain, skeleton, tasks);
+    runTasks(tasks, threads);
+    emit(0, skeleton, tasks);
+    for (const Task& t : tasks) maxDepth_ = std::max(maxDepth_, t.maxDepth);
     return maxDepth_;
   }
 
  private:
+  /// The parallel build's top phase makes ranges of about n / TASKS_PER_BUILD records (more
+  /// tasks than threads, so that a thread that drew a large subtree is balanced by the others),
+  /// but none below PARALLEL_GRAIN_MIN (a thread's start costs more than building it).
+  static constexpr std::uint32_t TASKS_PER_BUILD = 64;
+  static constexpr std::uint32_t PARALLEL_GRAIN_MIN = 4096;
+
+  /// A subtree to build, and once built, its arrays.
+  struct Task {
+    std::uint32_t begin, end;
+    int depth;
+    Bounds bounds;
+    std::vector<BvhNode> nodes;
+    std::vector<std::uint32_t> spheres, others;
+    int maxDepth = 0;
+  };
+  /// A node of the top phase: an interior node (its children's skeleton indices), or a task.
+  struct SkeletonNode {
+    FloatBox box;
+    int axis = 0;
+    std::int32_t task = -1;  ///< the task's index, or -1 for an interior node
+    std::uint32_t first = 0, second = 0;
+  };
+
+  /// Step 1 for records [begin, end): returns the skeleton index of their node.
+  std::uint32_t split(std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds,
+                      std::uint32_t grain, std::vector<SkeletonNode>& skeleton,
+                      std::vector<Task>& tasks) {
+    const auto index = static_cast<std::uint32_t>(skeleton.size());
+    skeleton.emplace_back();
+    const Split s = end - begin <= grain ? Split{} : chooseSplit(begin, end, bounds, depth);
+    if (s.leaf) {  // a small range, or a leaf: its Task chooses the same again
+      skeleton[index].task = static_cast<std::int32_t>(tasks.size());
+      tasks.push_back(Task{begin, end, depth, bounds, {}, {}, {}, 0});
+      return index;
+    }
+    const std::uint32_t first = split(begin, s.mid, depth + 1, s.left, grain, skeleton, tasks);
+    const std::uint32_t second = split(s.mid, end, depth + 1, s.right, grain, skeleton, tasks);
+    skeleton[index] = SkeletonNode{bounds.box, s.axis, -1, first, second};
+    return index;
+  }
+
+  /// Step 2: the tasks on `threads` threads (the calling thread one of them).
+  void runTasks(std::vector<Task>& tasks, int threads) {
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t k; (k = next.fetch_add(1)) < tasks.size();) {
+        Task& t = tasks[k];
+        Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
+        b.buildNode(t.begin, t.end, t.depth, t.bounds);
+        t.maxDepth = b.maxDepth_;
+      }
+    };
+    std::vector<std::thread> helpers;
+    const int extra = std::min<int>(threads, static_cast<int>(tasks.size())) - 1;
+    for (int i = 0; i < extra; ++i) helpers.emplace_back(work);
+    work();
+    for (std::thread& h : helpers) h.join();
+  }
+
+  /// Step 3 for skeleton node `index`: returns the index of its node in the tree.
+  std::uint32_t emit(std::uint32_t index, const std::vector<SkeletonNode>& skeleton,
+                     std::vector<Task>& tasks) {
+    const SkeletonNode& s = skeleton[index];
+    const auto at = static_cast<std::uint32_t>(nodes_.size());
+    if (s.task < 0) {
+      nodes_.emplace_back();
+      emit(s.first, skeleton, tasks);
+      const std::uint32_t second = emit(s.second, skeleton, tasks);
+      nodes_[at] = interior(s.box, second, s.axis);
+      return at;
+    }
+    Task& t = tasks[static_cast<std::size_t>(s.task)];
+    const auto sphereBase = static_cast<std::uint32_t>(sphereShapes_.size());
+    const auto otherBase = static_cast<std::uint32_t>(otherShapes_.size());
+    for (BvhNode node : t.nodes) {
+      node.offset += node.kind == BvhNode::Kind::Interior ? at
+                     : node.kind == BvhNode::Kind::Spheres ? sphereBase
+                                                            : otherBase;
+      nodes_.push_back(node);
+    }
+    sphereShapes_.insert(sphereShapes_.end(), t.spheres.begin(), t.spheres.end());
+    otherShapes_.insert(otherShapes_.end(), t.others.begin(), t.others.end());
+    std::vector<BvhNode>().swap(t.nodes);  // done with: the peak stays near one tree's size
+    return at;
+  }
+
   /// Writes the node of records [begin, end) at the end of the array, then its subtree right
   /// after it (depth-first); returns its index.
   std::uint32_t buildNode(std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds) {
@@ -179,7 +293,7 @@ class Builder {
       for (int a = 0; a < 3; ++a) {  // (an axis of scale 0 puts all in bin 0, unused)
         Bin& bin = bins[a][binnings[a].bin(c[a])];
         ++bin.count;
-        bin.cost += testCost(r);
+        bin.spheres += r.sphere ? 1 : 0;
         bin.box.expand(r.box);
       }
     }
@@ -193,14 +307,14 @@ class Builder {
       FloatBox right = FloatBox::empty();
       double rightTests = 0;
       for (int b = used - 1; b > 0; --b) {
-        rightTests += bins[a][b].cost;
+        rightTests += bins[a][b].cost();
         right.expand(bins[a][b].box);
         if (bins[a][b - 1].count > 0) rightCost[b] = rightTests * right.widen().surfaceArea();
       }
       FloatBox left = FloatBox::empty();
       double leftTests = 0;
       for (int b = 0; b < used - 1; ++b) {
-        leftTests += bins[a][b].cost;
+        leftTests += bins[a][b].cost();
         left.expand(bins[a][b].box);
         if (bins[a][b].count == 0) continue;  // border b splits as border b - 1 does
         // Both sides are non-empty: bin 0 holds the lowest centroid, the last bin the highest.
@@ -214,7 +328,7 @@ class Builder {
     }
     const std::uint32_t n = end - begin;
     double leafCost = 0;  // every record is in one bin of each axis
-    for (int b = 0; b < used; ++b) leafCost += bins[0][b].cost;
+    for (int b = 0; b < used; ++b) leafCost += bins[0][b].cost();
     const double area = bounds.box.widen().surfaceArea();
     const bool splitPays = Bvh::TRAVERSAL_COST * area + bestCost < leafCost * area;
     if (!splitPays && n <= Bvh::MAX_LEAF_SIZE) return Split{};
@@ -356,7 +470,11 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options) : primitives_(primitive
   nodes_.reserve(2 * records.size() - 1);
   sphereShapes_.reserve(sphereCount);
   otherShapes_.reserve(records.size() - sphereCount);
-  depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth).build();
+  const int threads = options.threads > 0
+                          ? options.threads
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth)
+               .build(threads);
 
   // The records are done with before the compact spheres are made: the two never coexist.
   std::vector<BuildRecord>().swap(records);

@@ -139,9 +139,15 @@ Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept {
 }
 
 Roots intersectRoots(const TriangleMesh& mesh, std::size_t t, const Ray& ray) noexcept {
-  // A Triangle of these corners has the plane (first corner, flatNormal's bits).
+  // flatRoots' two conditions for a Triangle of these corners, whose plane is (first corner,
+  // flatNormal's bits), taken in the other order: both are pure, so the root is the same, and
+  // the inside test needs no normal. Most rays that reach a mesh triangle in a hierarchy pass
+  // beside it, and so never pay for the normal's square root.
+  Roots roots;
   const std::array<Point, 3> corners = mesh.corners(t);
-  return flatRoots(corners[0].xyz(), mesh.flatNormal(t).xyz(), corners, ray);
+  if (!passesInside(corners, ray)) return roots;
+  roots.add(planeT(corners[0].xyz(), mesh.flatNormal(t).xyz(), ray));
+  return roots;
 }
 
 namespace {

@@ -28,6 +28,9 @@ struct BvhBuildOptions {
   /// Where the build turns from the SAH to median splits (clamped to 0..SAH_MAX_DEPTH). 0 gives
   /// a median-split tree, to compare with; the tests use small values to reach median splits.
   int sahMaxDepth = SAH_MAX_DEPTH;
+  /// Threads that build, the calling thread included; 0: one per core. The tree is the same,
+  /// node for node, for any number (BvhBuild.cpp says how).
+  int threads = 0;
 };
 
 class Bvh final : public Intersectable {
