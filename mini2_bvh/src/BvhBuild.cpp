@@ -149,7 +149,7 @@ class Builder {
   /// The parallel build's top phase stops at ranges of at most n / TASKS_PER_BUILD records:
   /// more tasks than threads, so that a thread that drew a large subtree is balanced by the
   /// others, yet few levels split on one thread (each level is a pass over all n records; on
-  /// the 10^6-triangle teapot, 16 built faster than 8 or 64 on 2 cores). No range below
+  /// the 10^6-triangle teapot on 2 cores, 8, 16 and 64 tasks built within the machine's noise). No range below
   /// PARALLEL_GRAIN_MIN becomes a task of its own (a thread's start costs more than its build).
   static constexpr std::uint32_t TASKS_PER_BUILD = 16;
   static constexpr std::uint32_t PARALLEL_GRAIN_MIN = 4096;
