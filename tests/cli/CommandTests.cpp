@@ -43,6 +43,16 @@ using test::run;
 // ---------------------------------------------------------------------------------------------
 // The built-in scenes
 
+/// The message with which built-in scene `name` refuses --param `param`, or "" when it takes it.
+std::string refused(const char* name, const char* param) {
+  try {
+    (void)makeBuiltinScene(*findBuiltinScene(name), std::vector<std::string>{param});
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   // TC01: the scene count is stage 4's two scenes plus every entry of the stages' tables
   // (and mini project 1's galaxy and demonstration scenes, mini project 2's two teapots)
@@ -124,14 +134,6 @@ TEST(BuiltinScenesTests, demoScenesCarryTheirRenderSettingsAndKnobs) {
                 .shadowSamples,
             4);
   // TC11: a value out of range, naming the parameter
-  const auto refused = [&](const char* name, const char* param) {
-    try {
-      (void)doc(name, {param});
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   EXPECT_EQ(refused("antialiasing", "samples=0"),
             "--param samples: expected an integer from 1 to 64, got '0'");
   EXPECT_EQ(refused("depth-of-field", "aperture=-1"),
@@ -169,14 +171,6 @@ TEST(BuiltinScenesTests, teapotsTakeTheirParameters) {
   EXPECT_NE(std::get<Sphere>(litScene(doc("bubbles", {"seed=2"})).geometries[0]).center(),
             std::get<Sphere>(litScene(bubbles).geometries[0]).center());
   // TC11: values out of range, naming the parameter
-  const auto refused = [&](const char* name, const char* param) {
-    try {
-      (void)doc(name, {param});
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   EXPECT_EQ(refused("teapot", "detail=0"),
             "--param detail: expected an integer from 1 to 256, got '0'");
   EXPECT_EQ(refused("teapot", "detail=257"),
