@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
+#include "geometries/TriangleMesh.h"
 #include "glossy/DemoTable.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
@@ -500,6 +502,38 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "  \"hits\": [],\n"
             "  \"color\": [0, 0, 0]\n"
             "}\n");
+}
+
+TEST(ProbeTests, aMeshTriangleIsAHitWithTheMeshsNormal) {
+  // TC01: a triangle of a mesh in front of probeScene's sphere and plane: a hit numbered after
+  // the two shapes, with the mesh's normal there (flat: the triangle's own, +z, whichever side
+  // the ray comes from), and the colour of the mesh's row (emission (0,0,50) + Ia·kA)
+  SceneDocument doc = probeScene();
+  LitScene& scene = litScene(doc);
+  scene.addMesh(std::make_shared<const TriangleMesh>(
+                    std::vector<Point>{Point(-3, -2, 1), Point(3, -2, 1), Point(0, 4, 1)},
+                    std::vector<TriangleMesh::Indices>{{0, 1, 2}}),
+                scene.addAppearance(Color(0, 0, 50)));
+  const PhongTracer tracer(scene);
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\"t\": 3, \"point\": [-1, 0.5, 1], \"normal\": [0, 0, 1], \"geometry\": 2, "
+            "\"name\": null},\n"
+            "    {\"t\": 5, \"point\": [-1, 0.5, 3], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 9, \"point\": [-1, 0.5, 7], \"normal\": [0, 0, 1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
+            "\"name\": null}\n"
+            "  ],\n"
+            "  \"color\": [50, 50, 100]\n"
+            "}\n");
+  // TC02: rt probe of a pixel of the teapot (a mesh alone): its hits, front and back
+  const Outcome r = run({"probe", "teapot", "--pixel", "400,400"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"geometry\": "), std::string::npos) << r.out;
 }
 
 // ---------------------------------------------------------------------------------------------
