@@ -1,9 +1,10 @@
 #pragma once
 /// @file Teapot.h
 /// The course's own benchmark, TeapotTest: the Utah teapot as a mesh of flat triangles, one
-/// point light, a camera looking at it along +z. The course's lecturer times his threads with it
-/// (2024's 800 x 800 teapot), and the next year's adds 400 small "bubbles" rising from the spout
-/// (1000 x 1000); mini project 2 times its accelerations and threads with both.
+/// point light, a camera looking at it along +z (2024's file, 800 x 800), and the next year's,
+/// which adds 400 small "bubbles" rising from the spout (1000 x 1000) and whose comments hold the
+/// lecturer's timings of his threads; mini project 2 times its accelerations and threads with
+/// both.
 ///
 /// The teapot is stage 2's utahTeapot(detail), placed as the course's 992 triangles are (see
 /// teapotMesh); the rest as the course's file sets it (course catalogue §5):
@@ -48,14 +49,14 @@ struct BubbleOptions {
 
 /// The Utah teapot of utahTeapot(options.detail), placed as the course's TeapotTest has it: y
 /// up, the spout towards +x, the handle towards -x. The course's 992 triangles are Newell's
-/// teapot turned so, scaled by 28.4254 and moved by (0.831025, -39.8754, -1.10804): Newell's
+/// teapot turned so, scaled by about 28.4254 and moved by (0.831025, -39.8754, -1.10804): Newell's
 /// point (1.4, 0, 2.4), on the rim, is the course's first point (40.6266, 28.3457, -1.10804),
-/// his bottom (z = 0) the course's y = -39.8754, his knob's top (z = 3.15) y = 49.6647. So the
-/// course's 992 are reproduced to the 5 or 6 digits the course's file prints: the teapot spans
-/// x from -84.4 (the handle) to 98.4 (the spout's tip) and y from -39.9 to 49.7, the middle of
-/// the 200 x 200 view.
+/// his bottom (z = 0) the course's y = -39.8754, his knob's top (z = 3.15) y = 49.6647. With
+/// the scale 28.42544, fitted to them, the course's points (printed to 6 digits; the tests check
+/// nine, on every part) are vertices of ours to within 1e-4. The teapot spans x from -84.4 (the handle) to 98.3 (the spout's tip) and y from
+/// -39.9 to 49.7, the middle of the 200 x 200 view.
 ///
-///     (x, y, z) of Newell's  ->  (s·x + 0.831025, s·z - 39.8754, -s·y - 1.10804), s = 28.4254
+///     (x, y, z) of Newell's  ->  (s·x + 0.831025, s·z - 39.8754, -s·y - 1.10804), s = 28.42544
 ///
 /// a quarter turn about x (Newell's +y goes to -z, towards the camera) with no mirror, so the
 /// triangles keep their outward winding; the normals (smooth) turn alike.
