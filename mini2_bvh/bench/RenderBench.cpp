@@ -19,7 +19,7 @@
 //    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
 //    and N threads (medians of R renders, alternately), and the peak resident size of a process
 //    that did only that (each galaxy is measured in a child process of its own:
-//    benchmark/GalaxyScaling.h, which rt bench --scaling uses too).
+//    benchmark/Scaling.h, which rt bench --scaling uses too).
 // A timing is never a test: this prints figures, it asserts nothing.
 
 #include <algorithm>
@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
-#include "benchmark/GalaxyScaling.h"
 #include "benchmark/Measure.h"
+#include "benchmark/Scaling.h"
 #include "camera/Camera.h"
 #include "parallel/TileGrid.h"
 #include "parallel/TilePool.h"
@@ -123,7 +123,7 @@ void stars(const std::vector<long>& sizes, const BenchOptions& o) {
               "build s", "BVH MB", "1 thr cpu", "1 thr wall", "N thr wall", "speed-up", "rays",
               "peak MB");
   for (const long n : sizes) {
-    const GalaxyMeasurement r = *measureGalaxy(n, 400, 400, timing(o));
+    const ScalingMeasurement r = *measureGalaxy(n, 400, 400, timing(o));
     const TimedRenders& c = r.renders;
     std::printf("%8ld %8llu %10.3f %8.3f %7.1f %10.3f %10.3f %10.3f %9.2f %9llu %8.1f%s\n", n,
                 static_cast<unsigned long long>(r.shapes), r.generateSeconds, r.buildSeconds,

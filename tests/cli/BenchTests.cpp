@@ -57,6 +57,7 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   EXPECT_EQ(j["height"], 9);
   EXPECT_EQ(j["threads"], cores());
   EXPECT_FALSE(j["machine"].get<std::string>().empty());
+  EXPECT_EQ(j["reference"], "the reference report's times for its galaxy at 1280x720");
   // TC02: the rows in the documented order, each with exactly the documented keys
   const json& rows = j["rows"];
   const std::vector<std::string> names = expectedNames();
@@ -128,6 +129,63 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_TRUE(err[i].starts_with("rt bench: row " + std::to_string(i + 1) + "/" +
                                    std::to_string(names.size()) + ": " + names[i] + " ("))
         << err[i];
+}
+
+TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
+  // 96 x 96: nine tiles of 32, so that the rows of 2, 3 and 4 threads have them all.
+  const Outcome r = run({"bench", "teapot", "--width", "96", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // TC01: the caption's reference names whose times they are, and where they were measured
+  EXPECT_EQ(j["scene"], "teapot");
+  EXPECT_EQ(j["height"], 96);
+  EXPECT_TRUE(j["reference"].get<std::string>().starts_with(
+      "the course lecturer's times for his TeapotTest of 2025 (1000x1000 with 400 bubbles, no "
+      "acceleration), in Java on his machine, not this one"))
+      << j["reference"];
+  // TC02: the lecturer's thread rows, then the structures with every core, then every stage's
+  // tracer through the BVH
+  std::vector<std::string> names{"no acceleration",     "2 threads",     "3 threads",
+                                 "4 threads",           "threads",       "threads + CBR",
+                                 "threads + CBR + BVH", "threads + grid"};
+  for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
+  const json& rows = j["rows"];
+  ASSERT_EQ(rows.size(), names.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i]["name"], names[i]) << i;
+  // TC03: the teapot's tracer (Whitted), the accelerations and the threads of each
+  const int every = std::min(cores(), 9);
+  const std::vector<std::string> accels{"none", "none", "none", "none",
+                                        "none", "cbr",  "bvh",  "grid"};
+  const std::vector<int> threads{1, 2, 3, 4, every, every, every, every};
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(rows[i]["tracer"], "whitted") << i;
+    EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
+    EXPECT_EQ(rows[i]["threads"], threads[i]) << i;
+  }
+  // TC04: his times beside his rows (his 0 threads: 25 s; 2, 3, 4: 13.6, 10.7, 10.7; every
+  // core: 9.3), none beside the others
+  const std::vector<double> reference{25, 13.6, 10.7, 10.7, 9.3};
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
+  for (std::size_t i = 5; i < rows.size(); ++i)
+    EXPECT_TRUE(rows[i]["referenceSeconds"].is_null()) << i;
+  // TC05: the eight rows trace the same rays (the same image): a camera ray per pixel and
+  // shadow rays, none reflected (the teapot is matte)
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(rows[i]["primary"], 96 * 96) << i;
+    EXPECT_EQ(rows[i]["secondary"], 0) << i;
+    EXPECT_EQ(rows[i]["shadow"], rows[0]["shadow"]) << i;
+  }
+  EXPECT_GT(rows[0]["shadow"].get<long>(), 0);
+  // TC06: the bubbles have the same rows and times; another scene has the report's rows and no
+  // reference at all
+  const json b = json::parse(run({"bench", "bubbles", "--width", "16", "--json"}).out);
+  ASSERT_EQ(b["rows"].size(), names.size());
+  EXPECT_EQ(b["rows"][1]["name"], "2 threads");
+  EXPECT_EQ(b["rows"][4]["referenceSeconds"], 9.3);
+  EXPECT_EQ(b["reference"], j["reference"]);
+  const json other = json::parse(run({"bench", "two-color", "--width", "8", "--json"}).out);
+  EXPECT_TRUE(other["reference"].is_null());
+  EXPECT_EQ(other["rows"][1]["name"], "threads");
 }
 
 TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
@@ -319,6 +377,84 @@ TEST(BenchTests, scalingCsvAndMarkdown) {
   EXPECT_TRUE(out[4].starts_with("| 100 | ")) << out[4];
 }
 
+TEST(BenchTests, scalingTheTeapotMeasuresEachDetailInItsOwnProcess) {
+  const Outcome r =
+      run({"bench", "--scaling", "teapot", "--details", "4,13", "--width", "20", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  // TC01: the documented header
+  EXPECT_EQ(j["scene"], "teapot");
+  EXPECT_EQ(j["width"], 20);
+  EXPECT_EQ(j["height"], 20);
+  const json& rows = j["scaling"];
+  ASSERT_EQ(rows.size(), 2u);
+  // TC02: each row has exactly the documented keys
+  std::vector<std::string> keys{"detail",
+                                "triangles",
+                                "buildSeconds",
+                                "renderSeconds",
+                                "peakBytes",
+                                "bytesPerTriangle",
+                                "nodesPerRay",
+                                "gridBuildSeconds",
+                                "gridRenderSeconds",
+                                "gridPeakBytes",
+                                "gridBytesPerTriangle",
+                                "gridCellsPerRay"};
+  std::sort(keys.begin(), keys.end());
+  for (const json& row : rows) {
+    std::vector<std::string> got;
+    for (const auto& [key, value] : row.items()) got.push_back(key);
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, keys);
+  }
+  // TC03: the details asked for and their triangles, 64·d² − 8·d; a peak of each child's own
+  EXPECT_EQ(rows[0]["detail"], 4);
+  EXPECT_EQ(rows[0]["triangles"], 992);
+  EXPECT_EQ(rows[1]["detail"], 13);
+  EXPECT_EQ(rows[1]["triangles"], 10712);
+  for (const json& row : rows) {
+    EXPECT_GT(row["peakBytes"].get<long>(), 0);
+    EXPECT_GT(row["gridPeakBytes"].get<long>(), 0);
+    EXPECT_GE(row["bytesPerTriangle"].get<long>(), 0);
+    EXPECT_GT(row["renderSeconds"].get<double>(), 0);
+    EXPECT_GT(row["gridRenderSeconds"].get<double>(), 0);
+    EXPECT_GT(row["nodesPerRay"].get<double>(), 0);
+    EXPECT_GT(row["gridCellsPerRay"].get<double>(), 0);
+  }
+  // TC04: one progress line per teapot
+  const std::string threads = std::to_string(cores()) + (cores() == 1 ? " thread" : " threads");
+  EXPECT_EQ(lines(r.err),
+            (std::vector<std::string>{
+                "rt bench: teapot 1/2: detail 4 (992 triangles), 20x20, " + threads,
+                "rt bench: teapot 2/2: detail 13 (10712 triangles), 20x20, " + threads}));
+  // TC05: CSV: the header line, exactly, and a line per teapot
+  Outcome c = run({"bench", "--scaling", "teapot", "--details", "2", "--width", "8", "--csv"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  std::vector<std::string> out = lines(c.out);
+  ASSERT_EQ(out.size(), 2u) << c.out;
+  EXPECT_EQ(out[0],
+            "detail,triangles,buildSeconds,renderSeconds,peakBytes,bytesPerTriangle,nodesPerRay,"
+            "gridBuildSeconds,gridRenderSeconds,gridPeakBytes,gridBytesPerTriangle,"
+            "gridCellsPerRay");
+  EXPECT_TRUE(out[1].starts_with("2,240,")) << out[1];
+  // TC06: Markdown: a caption, the header exactly, a line per teapot
+  c = run({"bench", "--scaling", "teapot", "--details", "2", "--width", "8"});
+  ASSERT_EQ(c.code, 0) << c.err;
+  out = lines(c.out);
+  ASSERT_EQ(out.size(), 5u) << c.out;
+  EXPECT_TRUE(
+      out[0].starts_with("rt bench --scaling teapot: the course's teapot of 64*d^2 - 8*d "
+                         "flat triangles (detail d), 8x8 (the course's view), Whitted "
+                         "tracer, through the BVH and through the grid, "))
+      << out[0];
+  EXPECT_TRUE(out[0].ends_with(" of an empty process) / triangles")) << out[0];
+  EXPECT_EQ(out[2],
+            "| detail | triangles | BVH build | BVH render | BVH peak | BVH bytes/triangle | "
+            "nodes/ray | grid build | grid render | grid peak | grid bytes/triangle | cells/ray |");
+  EXPECT_TRUE(out[4].starts_with("| 2 | 240 | ")) << out[4];
+}
+
 // ---------------------------------------------------------------------------------------------
 // Usage errors, all before the first ray
 
@@ -379,7 +515,7 @@ TEST(BenchTests, badUsageExitsWithTwoBeforeAnyRay) {
       // TC12: the scaling of another scene
       {"TC12",
        {"bench", "two-color", "--scaling"},
-       "rt: --scaling: renders the built-in galaxy only, got 'two-color'\n"},
+       "rt: --scaling: renders the built-in galaxy or teapot only, got 'two-color'\n"},
       // TC13: the scaling with an option that would change its render
       {"TC13",
        {"bench", "--scaling", "--tracer", "phong"},
@@ -389,6 +525,24 @@ TEST(BenchTests, badUsageExitsWithTwoBeforeAnyRay) {
       {"TC14",
        {"bench", "--param", "stars=-1"},
        "rt: --param stars: expected an integer from 0 to 10000000, got '-1'\n"},
+      // TC16: --details without --scaling
+      {"TC16",
+       {"bench", "teapot", "--details", "4"},
+       "rt: --details: only with --scaling teapot (the teapot's details)\n"},
+      // TC17: the galaxy's scaling with the teapot's details, and the teapot's with stars
+      {"TC17",
+       {"bench", "--scaling", "--details", "4"},
+       "rt: --details: not with --scaling (it renders the galaxy of --stars stars without "
+       "diffusion, beams tracer, BVH and grid)\n"},
+      {"TC18",
+       {"bench", "--scaling", "teapot", "--stars", "1000"},
+       "rt: --stars: not with --scaling teapot (it renders the teapot of --details details, flat, "
+       "Whitted tracer, BVH and grid)\n"},
+      // TC19: the teapot's scaling with a parameter
+      {"TC19",
+       {"bench", "--scaling", "teapot", "--param", "smooth=on"},
+       "rt: --param: not with --scaling teapot (it renders the teapot of --details details, flat, "
+       "Whitted tracer, BVH and grid)\n"},
       // TC15: too many threads
       {"TC15",
        {"bench", "--threads", "1025"},
@@ -397,6 +551,13 @@ TEST(BenchTests, badUsageExitsWithTwoBeforeAnyRay) {
       {"TC21",
        {"bench", "--repeat", "1001"},
        "rt: --repeat: expected an integer from 1 to 1000, got '1001'\n"},
+      // TC23: a detail of 0, and one beyond the most
+      {"TC23",
+       {"bench", "--scaling", "teapot", "--details", "4,0"},
+       "rt: --details: expected an integer from 1 to 256, got '0'\n"},
+      {"TC24",
+       {"bench", "--scaling", "teapot", "--details", "257"},
+       "rt: --details: expected an integer from 1 to 256, got '257'\n"},
       // TC22: one beyond the most stars
       {"TC22",
        {"bench", "--scaling", "--stars", "10000001"},
@@ -416,7 +577,7 @@ TEST(BenchTests, helpShowsTheSceneAsOptional) {
   // TC01: SCENE may be left out (the galaxy); the options are listed
   EXPECT_TRUE(r.out.starts_with("Usage: rt bench [SCENE] [OPTIONS]\n")) << r.out;
   for (const char* text : {"--full", "--repeat N", "--csv", "--json", "--scaling", "--stars LIST",
-                           "--threads N", "-o, --output", "130"})
+                           "--details LIST", "--threads N", "-o, --output", "130"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
   EXPECT_EQ(r.out.find("--accel"), std::string::npos);
   // TC02: rt --help lists the command

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
+#include "geometries/TriangleMesh.h"
 #include "glossy/DemoTable.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
@@ -43,11 +45,21 @@ using test::run;
 // ---------------------------------------------------------------------------------------------
 // The built-in scenes
 
+/// The message with which built-in scene `name` refuses --param `param`, or "" when it takes it.
+std::string refused(const char* name, const char* param) {
+  try {
+    (void)makeBuiltinScene(*findBuiltinScene(name), std::vector<std::string>{param});
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
   // TC01: the scene count is stage 4's two scenes plus every entry of the stages' tables
-  // (and mini project 1's galaxy and demonstration scenes)
+  // (and mini project 1's galaxy and demonstration scenes, mini project 2's two teapots)
   const std::size_t expected = 2 + lightingScenes().size() + shadowScenes().size() +
-                               reflectionScenes().size() + 1 + demoScenes().size();
+                               reflectionScenes().size() + 1 + demoScenes().size() + 2;
   EXPECT_EQ(builtinScenes().size(), expected);
   // TC02: every table entry is there under its own name, with its stage's tracer
   const auto expectEntries = [](std::span<const CourseScene> table, const char* tracer) {
@@ -124,20 +136,58 @@ TEST(BuiltinScenesTests, demoScenesCarryTheirRenderSettingsAndKnobs) {
                 .shadowSamples,
             4);
   // TC11: a value out of range, naming the parameter
-  const auto refused = [&](const char* name, const char* param) {
-    try {
-      (void)doc(name, {param});
-    } catch (const UsageError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   EXPECT_EQ(refused("antialiasing", "samples=0"),
             "--param samples: expected an integer from 1 to 64, got '0'");
   EXPECT_EQ(refused("depth-of-field", "aperture=-1"),
             "--param aperture: expected a number from 0 to 1000, got -1");
   EXPECT_EQ(refused("adaptive", "adaptive=maybe"),
             "--param adaptive: expected on or off, got 'maybe'");
+}
+
+TEST(BuiltinScenesTests, teapotsTakeTheirParameters) {
+  const auto doc = [](const char* name, std::vector<std::string> params = {}) {
+    return makeBuiltinScene(*findBuiltinScene(name), params);
+  };
+  const auto triangles = [](const SceneDocument& d) {
+    return litScene(d).geometries.triangleCount();
+  };
+  // TC01: the course's TeapotTest: 992 flat triangles, 800 x 800, the Whitted tracer (the
+  // course's SimpleRayTracer), no grid lines unless asked for
+  const SceneDocument teapot = doc("teapot");
+  EXPECT_EQ(findBuiltinScene("teapot")->stage, "mini2_bvh");
+  EXPECT_EQ(teapot.render.tracer, "whitted");
+  EXPECT_EQ(triangles(teapot), 992u);
+  EXPECT_FALSE(litScene(teapot).geometries.meshes()[0].mesh->hasNormals());
+  EXPECT_EQ(teapot.camera.nX, 800);
+  EXPECT_EQ(teapot.render.gridLines, 0);
+  // TC02: its parameters: a finer teapot, smooth, the course's grid lines every 50 pixels
+  EXPECT_EQ(triangles(doc("teapot", {"detail=13"})), 10712u);
+  EXPECT_TRUE(litScene(doc("teapot", {"smooth=on"})).geometries.meshes()[0].mesh->hasNormals());
+  EXPECT_EQ(doc("teapot", {"grid=50"}).render.gridLines, 50);
+  // TC03: the later year's: 400 bubbles, 1000 x 1000; fewer, and elsewhere with another seed
+  const SceneDocument bubbles = doc("bubbles");
+  EXPECT_EQ(litScene(bubbles).geometries.size(), 400u);
+  EXPECT_EQ(triangles(bubbles), 992u);
+  EXPECT_EQ(bubbles.camera.nX, 1000);
+  EXPECT_EQ(litScene(doc("bubbles", {"count=7"})).geometries.size(), 7u);
+  EXPECT_NE(std::get<Sphere>(litScene(doc("bubbles", {"seed=2"})).geometries[0]).center(),
+            std::get<Sphere>(litScene(bubbles).geometries[0]).center());
+  // TC11: values out of range, naming the parameter
+  EXPECT_EQ(refused("teapot", "detail=0"),
+            "--param detail: expected an integer from 1 to 256, got '0'");
+  EXPECT_EQ(refused("teapot", "detail=257"),
+            "--param detail: expected an integer from 1 to 256, got '257'");
+  EXPECT_EQ(refused("teapot", "smooth=yes"), "--param smooth: expected on or off, got 'yes'");
+  EXPECT_EQ(refused("teapot", "grid=-1"),
+            "--param grid: expected an integer from 0 to 32768, got '-1'");
+  EXPECT_EQ(refused("bubbles", "count=1000001"),
+            "--param count: expected an integer from 0 to 1000000, got '1000001'");
+  // TC12: the teapot has no bubbles to count
+  EXPECT_EQ(refused("teapot", "count=3")
+                .rfind("--param: the scene 'teapot' has no parameter "
+                       "'count'",
+                       0),
+            0u);
 }
 
 TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {
@@ -196,8 +246,8 @@ TEST(CommandTests, helpAndVersion) {
   r = run({"render", "--help"});
   EXPECT_EQ(r.code, 0);
   EXPECT_TRUE(r.out.starts_with("Usage: rt render SCENE [OPTIONS]\n")) << r.out;
-  for (const char* text : {"SCENE.png", "--width W", "--height H", "--tracer T", "--quiet",
-                           "--silent", "-o, --output FILE.png", "whitted", "130"})
+  for (const char* text : {"SCENE.png", "--width W", "--height H", "--tracer T", "--grid-lines N",
+                           "--quiet", "--silent", "-o, --output FILE.png", "whitted", "130"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
   // TC04: the other commands' help
   for (const char* command : {"list", "probe", "export"}) {
@@ -454,6 +504,38 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "}\n");
 }
 
+TEST(ProbeTests, aMeshTriangleIsAHitWithTheMeshsNormal) {
+  // TC01: a triangle of a mesh in front of probeScene's sphere and plane: a hit numbered after
+  // the two shapes, with the mesh's normal there (flat: the triangle's own, +z, whichever side
+  // the ray comes from), and the colour of the mesh's row (emission (0,0,50) + Ia·kA)
+  SceneDocument doc = probeScene();
+  LitScene& scene = litScene(doc);
+  scene.addMesh(std::make_shared<const TriangleMesh>(
+                    std::vector<Point>{Point(-3, -2, 1), Point(3, -2, 1), Point(0, 4, 1)},
+                    std::vector<TriangleMesh::Indices>{{0, 1, 2}}),
+                scene.addAppearance(Color(0, 0, 50)));
+  const PhongTracer tracer(scene);
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\"t\": 3, \"point\": [-1, 0.5, 1], \"normal\": [0, 0, 1], \"geometry\": 2, "
+            "\"name\": null},\n"
+            "    {\"t\": 5, \"point\": [-1, 0.5, 3], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 9, \"point\": [-1, 0.5, 7], \"normal\": [0, 0, 1], \"geometry\": 0, "
+            "\"name\": \"ball \\\"A\\\"\"},\n"
+            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
+            "\"name\": null}\n"
+            "  ],\n"
+            "  \"color\": [50, 50, 100]\n"
+            "}\n");
+  // TC02: rt probe of a pixel of the teapot (a mesh alone): its hits, front and back
+  const Outcome r = run({"probe", "teapot", "--pixel", "400,400"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"geometry\": "), std::string::npos) << r.out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // scenes/ and the output checks
 
@@ -462,6 +544,9 @@ TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
   const fs::path dir = RT_SCENES_DIR;
   // TC01: scenes/NAME.json is the current export of every built-in scene
   for (const BuiltinScene& s : builtinScenes()) {
+    // TODO(issue 15, task A): the scene format writes no meshes yet; the teapots' exports are
+    // kept in scenes/ once it does (then this skip goes).
+    if (!litScene(makeBuiltinScene(s, {})).geometries.meshes().empty()) continue;
     const fs::path file = dir / (s.name + ".json");
     ASSERT_TRUE(fs::exists(file)) << file
                                   << " is missing; run: cmake --build BUILD --target export-scenes";

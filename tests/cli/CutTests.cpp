@@ -5,6 +5,7 @@
 // format knows) and expects the answer of that build.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -97,6 +98,55 @@ TEST(CutTests, rendersAndExportsInEveryCut) {
   std::ifstream fa(dir + "/a.png", std::ios::binary), fb(dir + "/b.png", std::ios::binary);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(fa), {}),
             std::string(std::istreambuf_iterator<char>(fb), {}));
+}
+
+TEST(CutTests, gridLinesArePaintedOnTheRenderedImage) {
+  const std::string dir = freshDirectory("gridLines");
+  using Rgb = std::array<unsigned char, 3>;
+  const Rgb yellow{255, 255, 0}, blue{0, 0, 255}, black{0, 0, 0};
+  // TC01: --grid-lines 7: the pixels of every seventh column and row (0, 7, 14) are the course's
+  // yellow, every other pixel is the image without lines
+  const std::vector<std::string> twoColor{"render", "two-color", "--width", "20", "--silent"};
+  std::vector<std::string> plain = twoColor, lined = twoColor;
+  plain.insert(plain.end(), {"-o", dir + "/plain.png"});
+  lined.insert(lined.end(), {"-o", dir + "/lined.png", "--grid-lines", "7"});
+  ASSERT_EQ(0, run(plain).code);
+  const Outcome r = run(lined);
+  ASSERT_EQ(0, r.code) << r.err;
+  const Rgb8Image a = readPng(dir + "/plain.png"), b = readPng(dir + "/lined.png");
+  ASSERT_EQ(20, b.width);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x)
+      EXPECT_EQ(x % 7 == 0 || y % 7 == 0 ? yellow : a.at(x, y), b.at(x, y)) << x << "," << y;
+  // TC02: a scene file's render.gridLines and render.gridColor: blue lines every 5 pixels on
+  // the black background of a scene without shapes
+  const std::string scene = writeText(dir + "/lines.json", R"({
+  "camera": {"location": [0, 0, 10], "target": [0, 0, 0], "vpDistance": 1, "vpSize": [1, 1],
+             "resolution": [12, 12]},
+  "render": {"gridLines": 5, "gridColor": [0, 0, 255]}
+})");
+  ASSERT_EQ(0, run({"render", scene, "-o", dir + "/blue.png", "--silent"}).code);
+  const Rgb8Image lines = readPng(dir + "/blue.png");
+  for (int y = 0; y < 12; ++y)
+    for (int x = 0; x < 12; ++x)
+      EXPECT_EQ(x % 5 == 0 || y % 5 == 0 ? blue : black, lines.at(x, y)) << x << "," << y;
+  // TC11: --grid-lines 0 takes the file's lines away: every pixel the background
+  ASSERT_EQ(0,
+            run({"render", scene, "-o", dir + "/none.png", "--grid-lines", "0", "--silent"}).code);
+  const Rgb8Image none = readPng(dir + "/none.png");
+  for (int y = 0; y < 12; ++y)
+    for (int x = 0; x < 12; ++x) EXPECT_EQ(black, none.at(x, y)) << x << "," << y;
+  // TC12: --grid-lines 1: every pixel is on a line
+  ASSERT_EQ(0,
+            run({"render", scene, "-o", dir + "/all.png", "--grid-lines", "1", "--silent"}).code);
+  const Rgb8Image all = readPng(dir + "/all.png");
+  for (int y = 0; y < 12; ++y)
+    for (int x = 0; x < 12; ++x) EXPECT_EQ(blue, all.at(x, y)) << x << "," << y;
+  // TC13: a negative interval is refused before any ray, naming the option
+  const Outcome bad = run({"render", scene, "-o", dir + "/bad.png", "--grid-lines", "-1"});
+  EXPECT_EQ(2, bad.code);
+  EXPECT_EQ("rt: --grid-lines: expected an integer from 0 to 32768, got '-1'\n", bad.err);
+  EXPECT_FALSE(fs::exists(dir + "/bad.png"));
 }
 
 TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {

@@ -122,7 +122,8 @@ const BadInput BAD_INPUTS[] = {
      "  \"render\": {\"fps\": 4}\n"
      "}\n",
      "bad.json:4:14: render.fps: unknown key; expected one of: tracer, maxLevel, minK, seed, "
-     "samples, adaptive, adaptiveThreshold, adaptiveDepth, beamDepth, accel, threads"},
+     "gridLines, gridColor, samples, adaptive, adaptiveThreshold, adaptiveDepth, beamDepth, accel "
+     "and 1 more"},
     // EP15: unknown key differing only in case
     {"UnknownKeyCase",
      "{\n"
@@ -421,6 +422,30 @@ const BadInput BAD_INPUTS[] = {
      "  \"render\": {\"maxLevel\": 0}\n"
      "}\n",
      "bad.json:4:26: render.maxLevel: expected an integer from 1 to 1000, got 0"},
+    // BV07: grid lines one pixel beyond the largest image side
+    {"GridLinesBeyondTheImage",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"render\": {\"gridLines\": 32769}\n"
+     "}\n",
+     "bad.json:4:27: render.gridLines: expected an integer from 0 to 32768, got 32769"},
+    // BV08: negative grid lines
+    {"GridLinesNegative",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"render\": {\"gridLines\": -1}\n"
+     "}\n",
+     "bad.json:4:27: render.gridLines: expected an integer from 0 to 32768, got -1"},
+    // EP47: a grid colour that is not a colour
+    {"GridColorNotAColour",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"render\": {\"gridColor\": \"yellow\"}\n"
+     "}\n",
+     "bad.json:4:27: render.gridColor: expected a colour [r,g,b], got \"yellow\""},
     // EP42: minK above 1
     {"MinKAboveOne",
      "{\n"

@@ -45,6 +45,9 @@ TEST(DefaultsTest, Document) {
   EXPECT_EQ(doc.render.tracer, model.tracer);
   EXPECT_EQ(doc.render.maxLevel, model.maxLevel);
   EXPECT_TRUE(sameBits(doc.render.minK, model.minK));
+  // EP02: no grid lines, and yellow ones when asked for (the course's printGrid colour)
+  EXPECT_EQ(doc.render.gridLines, 0);
+  EXPECT_EQ(doc.render.gridColor, Color(255, 255, 0));
 }
 
 TEST(DefaultsTest, Camera) {

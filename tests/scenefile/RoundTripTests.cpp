@@ -121,6 +121,23 @@ TEST(RoundTripTest, AwkwardNumbers) {
   EXPECT_EQ(dumpScene(back), dump1);
 }
 
+TEST(RoundTripTest, GridLinesAndTheirColour) {
+  // EP01: grid lines in a colour of their own are written in render, and read back
+  SceneDocument doc = baseDocument();
+  doc.render.gridLines = 50;
+  doc.render.gridColor = Color(0, 0, 255);
+  const std::string text = dumpScene(doc);
+  EXPECT_NE(text.find("\"gridLines\": 50, \"gridColor\": [0, 0, 255]"), std::string::npos) << text;
+  const SceneDocument back = parseScene(text, "dump");
+  EXPECT_EQ(back.render.gridLines, 50);
+  EXPECT_EQ(back.render.gridColor, Color(0, 0, 255));
+  // EP02: lines in the default colour (the course's yellow): the colour is not written
+  doc.render.gridColor = Color(255, 255, 0);
+  EXPECT_EQ(dumpScene(doc).find("gridColor"), std::string::npos);
+  // BV01: no lines (0, the default): nothing is written
+  EXPECT_EQ(dumpScene(baseDocument()).find("grid"), std::string::npos);
+}
+
 TEST(RoundTripTest, DirectionsComeBackExactly) {
   // EP01: a built-in scene's (1,1,1) normal is stored normalised; the export writes [1, 1, 1],
   // whose normalisation is exactly the stored normal.

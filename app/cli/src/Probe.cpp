@@ -68,7 +68,8 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const Color& col
     const std::string* name = doc.geometryName(h.geometry);
     hits.push_back({{"t", jsonNumber(h.t)},
                     {"point", jsonTriple(h.point.xyz())},
-                    {"normal", jsonTriple(normalAt(shapes[h.geometry], h.point).xyz())},
+                    // a primitive's normal: a shape's, or a mesh triangle's (numbered after them)
+                    {"normal", jsonTriple(shapes.normalAt(h.geometry, h.point).xyz())},
                     {"geometry", h.geometry},
                     {"name", name ? Json(*name) : Json(nullptr)}});
   }
@@ -94,7 +95,8 @@ void addProbeCommand(CommandLine& rt) {
       "   \"color\": [r, g, b]}\n"
       "hits: every intersection with t > 0, nearest first (the course's\n"
       "findGeoIntersections); normal: the shape's outward unit normal at the point;\n"
-      "geometry: the shape's index in the scene; color: what the tracer returns for the\n"
+      "geometry: the shape's index in the scene (a mesh's triangles are numbered after the\n"
+      "shapes); color: what the tracer returns for the\n"
       "ray, unclamped, on the 0-255 scale.\n",
       probe);
   // The values are checked by probe(): a pixel's range depends on the scene's resolution.

@@ -1,5 +1,5 @@
-// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--quiet|--silent] and the
-// options stages add (mini project 2: --threads N, --accel A)
+// rt render SCENE [-o FILE.png] [--width W] [--height H] [--tracer T] [--grid-lines N]
+// [--quiet|--silent] and the options stages add (mini project 2: --threads N, --accel A)
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -9,8 +9,10 @@
 
 #include "CommandRegistration.h"
 #include "camera/Camera.h"
+#include "camera/Image.h"
 #include "camera/ImageWriter.h"
 #include "camera/RenderBlock.h"
+#include "cli/CommandLine.h"
 #include "cli/Progress.h"
 #include "cli/Registry.h"
 #include "cli/RenderRequest.h"
@@ -24,8 +26,9 @@ namespace {
 struct RenderArgs {
   SceneArguments scene;
   std::optional<std::string> output;
-  bool quiet = false;   ///< no header, no progress; the final timing line stays
-  bool silent = false;  ///< nothing but errors
+  std::optional<int> gridLines;  ///< --grid-lines N: overrides render.gridLines
+  bool quiet = false;            ///< no header, no progress; the final timing line stays
+  bool silent = false;           ///< nothing but errors
 };
 
 int render(const RenderArgs& args, const Io& io) {
@@ -74,6 +77,10 @@ int render(const RenderArgs& args, const Io& io) {
            << " pixels; nothing written to " << output << "\n";
     return EXIT_INTERRUPTED;
   }
+  // The course's grid lines go on the finished image (its printGrid after renderImage), so they
+  // change no ray and no count.
+  if (const int every = args.gridLines.value_or(doc.render.gridLines); every > 0)
+    setup.camera.printGrid(every, doc.render.gridColor);
   PngImageWriter().write(image, output);
   const RayCounts& counts = outcome.counts;
   if (!args.silent) {
@@ -123,6 +130,11 @@ void addRenderCommand(CommandLine& rt) {
   addSceneArguments(*command, args->scene, "image width in pixels, 1..32768 (default: the scene's)",
                     "image height in pixels, 1..32768 (default: the scene's)",
                     "which stage's tracer renders it (default: the scene's)");
+  addOptional(*command, "--grid-lines", args->gridLines,
+              "draw the course's grid lines every N pixels on the image, 0..32768; 0: none "
+              "(default: the scene's render.gridLines; their colour: render.gridColor, yellow)",
+              "N")
+      ->transform(integerValidator(0, Image::MAX_SIDE));
   command->add_flag("-q,--quiet", args->quiet, "no progress; only the final timing line");
   command->add_flag("-s,--silent", args->silent, "print nothing but errors");
 }

@@ -94,6 +94,8 @@ constexpr CatalogueKey KEYS[] = {
     {"render", "maxLevel", S07, D, "10"},
     {"render", "minK", S07, D, "0.001"},
     {"render", "seed", S04, D, "0"},
+    {"render", "gridLines", S04, D, "0"},
+    {"render", "gridColor", S04, D, "[255,255,0]"},
     {"render", "samples", M1, D, "1"},
     {"render", "adaptive", M1, D, "false"},
     {"render", "adaptiveThreshold", M1, D, "16"},

@@ -1,9 +1,10 @@
 #pragma once
 /// @file Measure.h
 /// What the benchmarks measure with (mini2_render_bench, and `rt bench` in the command-line
-/// program): the CPU clocks, the median, the reference report's galaxy ready to render with its
-/// generation and its BVH's (or grid's) build timed, and a configuration's peak memory measured in
-/// a process of its own. A timing is never a test: these print figures, they assert nothing.
+/// program): the CPU clocks, the median, the reference report's galaxy and the course's teapot
+/// ready to render with their generation and their BVH's (or grid's) build timed, and a
+/// configuration's peak memory measured in a process of its own. A timing is never a test: these
+/// print figures, they assert nothing.
 
 #include <atomic>
 #include <cstddef>
@@ -21,6 +22,8 @@
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
 #include "grid/Grid.h"
+#include "reflections/WhittedTracer.h"
+#include "scenes/Teapot.h"
 
 namespace rt {
 
@@ -35,30 +38,58 @@ double processCpuSeconds();
 /// @throws std::invalid_argument when values is empty.
 double median(std::vector<double> values);
 
-/// The structure a GalaxyRender is built with.
-enum class GalaxyAccel { Bvh, Grid };
+/// The structure the scalings compare.
+enum class ScalingAccel { Bvh, Grid };
+
+/// A BVH or a grid over a scene's primitives, its build timed. The scene must outlive it.
+struct TimedStructure {
+  std::unique_ptr<Bvh> bvh;    ///< null for ScalingAccel::Grid
+  std::unique_ptr<Grid> grid;  ///< null for ScalingAccel::Bvh
+  double buildSeconds = 0;     ///< the build (one thread): this thread's CPU time
+
+  /// The structure, as a tracer takes it (null before one is built).
+  const Intersectable* get() const noexcept;
+  /// The bytes the structure holds on the heap.
+  std::size_t memoryBytes() const noexcept;
+};
+
+/// Builds accel's structure over geometries' primitives (shapes and mesh triangles), timed.
+TimedStructure buildTimed(const Geometries& geometries, ScalingAccel accel);
 
 /// A galaxy ready to render: the scene, its BVH (or its grid), the beams tracer through it. Not
 /// movable: the structure and the tracer refer to the scene.
 struct GalaxyRender {
   GalaxySetup setup;
   double generateSeconds = 0;  ///< galaxy(params): this thread's CPU time
-  double buildSeconds = 0;     ///< the structure's build (one thread): this thread's CPU time
-  std::unique_ptr<Bvh> bvh;    ///< null for GalaxyAccel::Grid
-  std::unique_ptr<Grid> grid;  ///< null for GalaxyAccel::Bvh
+  TimedStructure structure;
   std::unique_ptr<BeamTracer> tracer;
 
   /// @throws std::invalid_argument for invalid parameters (GalaxyParams::validate).
-  explicit GalaxyRender(const GalaxyParams& params, GalaxyAccel accel = GalaxyAccel::Bvh);
-  /// The bytes the structure holds on the heap.
-  std::size_t structureBytes() const noexcept;
+  explicit GalaxyRender(const GalaxyParams& params, ScalingAccel accel = ScalingAccel::Bvh);
   GalaxyRender(const GalaxyRender&) = delete;
   GalaxyRender& operator=(const GalaxyRender&) = delete;
 };
 
-/// The reference report's view of g at nX x nY pixels; an image of another shape than the reference
-/// report's 16:9 shows the middle of it (the view plane cut to the image's shape, so that pixels
-/// stay square): a square image shows the galaxy's middle, where the stars are.
+/// The course's teapot (scenes/Teapot.h, flat, without bubbles) ready to render: the scene, its
+/// BVH (or its grid), the Whitted tracer through it (the course's SimpleRayTracer). Not movable.
+struct TeapotRender {
+  SceneSetup<LitScene> setup;
+  double generateSeconds = 0;  ///< the tessellation and its placement: this thread's CPU time
+  TimedStructure structure;
+  std::unique_ptr<WhittedTracer> tracer;
+
+  /// @throws std::invalid_argument naming the detail outside 1..kUtahTeapotMaxDetail.
+  explicit TeapotRender(int detail, ScalingAccel accel = ScalingAccel::Bvh);
+  TeapotRender(const TeapotRender&) = delete;
+  TeapotRender& operator=(const TeapotRender&) = delete;
+};
+
+/// The camera spec at nX x nY pixels; an image of another shape than the spec's view plane shows
+/// the middle of it (the view plane cut to the image's shape, so that pixels stay square).
+Camera middleView(CameraSpec spec, int nX, int nY);
+
+/// The reference report's view of g at nX x nY pixels (middleView): a square image shows the
+/// galaxy's middle, where the stars are.
 Camera referenceView(const GalaxySetup& g, int nX, int nY);
 
 /// What work in a child process returned, and the child's peak resident size.

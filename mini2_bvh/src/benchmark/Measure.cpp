@@ -94,29 +94,42 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
 }
 
-GalaxyRender::GalaxyRender(const GalaxyParams& params, GalaxyAccel accel) {
-  double start = threadCpuSeconds();
-  setup = galaxy(params);
-  generateSeconds = threadCpuSeconds() - start;
-  start = threadCpuSeconds();
-  const Intersectable* structure = nullptr;
-  if (accel == GalaxyAccel::Grid) {
-    grid = std::make_unique<Grid>(setup.scene.geometries);
-    structure = grid.get();
-  } else {
-    bvh = std::make_unique<Bvh>(setup.scene.geometries);
-    structure = bvh.get();
-  }
-  buildSeconds = threadCpuSeconds() - start;
-  tracer = std::make_unique<BeamTracer>(setup.scene, structure);
+const Intersectable* TimedStructure::get() const noexcept {
+  return bvh ? static_cast<const Intersectable*>(bvh.get()) : grid.get();
 }
 
-std::size_t GalaxyRender::structureBytes() const noexcept {
+std::size_t TimedStructure::memoryBytes() const noexcept {
   return bvh ? bvh->memoryBytes() : grid ? grid->memoryBytes() : 0;
 }
 
-Camera referenceView(const GalaxySetup& g, int nX, int nY) {
-  CameraSpec spec = g.camera;
+TimedStructure buildTimed(const Geometries& geometries, ScalingAccel accel) {
+  TimedStructure s;
+  const double start = threadCpuSeconds();
+  if (accel == ScalingAccel::Grid)
+    s.grid = std::make_unique<Grid>(geometries);
+  else
+    s.bvh = std::make_unique<Bvh>(geometries);
+  s.buildSeconds = threadCpuSeconds() - start;
+  return s;
+}
+
+GalaxyRender::GalaxyRender(const GalaxyParams& params, ScalingAccel accel) {
+  const double start = threadCpuSeconds();
+  setup = galaxy(params);
+  generateSeconds = threadCpuSeconds() - start;
+  structure = buildTimed(setup.scene.geometries, accel);
+  tracer = std::make_unique<BeamTracer>(setup.scene, structure.get());
+}
+
+TeapotRender::TeapotRender(int detail, ScalingAccel accel) {
+  const double start = threadCpuSeconds();
+  setup = teapotScene({.detail = detail});
+  generateSeconds = threadCpuSeconds() - start;
+  structure = buildTimed(setup.scene.geometries, accel);
+  tracer = std::make_unique<WhittedTracer>(setup.scene, structure.get());
+}
+
+Camera middleView(CameraSpec spec, int nX, int nY) {
   if (nX * spec.vpHeight < nY * spec.vpWidth)
     spec.vpWidth = spec.vpHeight * nX / nY;
   else
@@ -125,6 +138,8 @@ Camera referenceView(const GalaxySetup& g, int nX, int nY) {
   spec.nY = nY;
   return spec.builder().build();
 }
+
+Camera referenceView(const GalaxySetup& g, int nX, int nY) { return middleView(g.camera, nX, nY); }
 
 std::optional<std::int64_t> runInChildProcess(const std::function<void(std::span<std::byte>)>& work,
                                               std::span<std::byte> result,

@@ -26,6 +26,8 @@ namespace rt {
 struct RenderSettings {
   std::string tracer;               ///< which stage's tracer renders it; "": the build's highest
   std::uint64_t seed = 0;           ///< the random numbers' seed: changes the noise, nothing else
+  int gridLines = 0;                ///< stage 4: a line every N pixels on the image; 0: none
+  Color gridColor{255, 255, 0};     ///< stage 4: the lines' colour (the course's yellow)
   int maxLevel = 10;                ///< stage 7: the recursion's depth
   double minK = 0.001;              ///< stage 7: the path weight's cut-off
   int samples = 1;                  ///< mini 1: N x N jittered samples per pixel

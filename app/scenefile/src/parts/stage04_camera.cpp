@@ -255,6 +255,10 @@ void attachRender(SceneFormat& format) {
   format.attach<R>("render", "seed", [](const Node& n, R& r) {
     r.seed = static_cast<std::uint64_t>(readInteger(n, 0));
   });
+  // The course's grid lines (Camera::printGrid), drawn on the image once it is rendered.
+  format.attach<R>("render", "gridLines",
+                   [](const Node& n, R& r) { r.gridLines = readInteger(n, 0, Image::MAX_SIDE); });
+  format.attach<R>("render", "gridColor", [](const Node& n, R& r) { r.gridColor = readColor(n); });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -349,6 +353,9 @@ void writeDocument(const SceneDocument& doc, Json& j) {
   Json& render = j["render"] = Json::object();
   if (!doc.render.tracer.empty()) render["tracer"] = doc.render.tracer;
   if (doc.render.seed != 0) render["seed"] = doc.render.seed;
+  const RenderSettings defaults;
+  if (doc.render.gridLines != defaults.gridLines) render["gridLines"] = doc.render.gridLines;
+  if (doc.render.gridColor != defaults.gridColor) render["gridColor"] = color(doc.render.gridColor);
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
 // rt bench [SCENE] [--full] [--repeat N] [--csv | --json] [-o FILE] [the scene options of render]
 // rt bench --scaling [--stars LIST] [--width W] [--height H] [--threads N] [--repeat N] [...]
+// rt bench --scaling teapot [--details LIST] [...]
 //
 // The command's registration: its options, its help, and which of the two it runs (the timing
-// table: BenchRows.cpp; the star scaling: BenchScaling.cpp).
+// table: BenchRows.cpp; the scalings: BenchScaling.cpp).
 #include "Bench.h"
 
 #include <algorithm>
@@ -14,6 +15,8 @@
 #include "BenchOutput.h"
 #include "cli/CommandLine.h"
 #include "cli/Values.h"
+#include "geometries/UtahTeapot.h"
+#include "glossy/Galaxy.h"
 #include "parallel/TilePool.h"
 
 namespace rt::cli {
@@ -53,8 +56,11 @@ void addBenchCommand(CommandLine& rt) {
       "resolution, the reference report's 1280x720 for the galaxy) with the reference\n"
       "report's rows, its own times beside them for the galaxy: no acceleration on one\n"
       "thread; threads; threads + CBR; threads + CBR + BVH; and threads + grid (the regular\n"
-      "grid, no report time); then with every stage's tracer through the BVH on every thread. "
-      "Columns: row, tracer, accel, threads (that rendered),\n"
+      "grid, no report time); then with every stage's tracer through the BVH on every thread.\n"
+      "The course's teapot and bubbles have the rows of the course lecturer's TeapotTest\n"
+      "instead, his times beside them (in Java, on his machine): no acceleration on one\n"
+      "thread; 2, 3 and 4 threads; threads (every core); then threads + CBR, + CBR + BVH,\n"
+      "+ grid, and every stage's tracer. Columns: row, tracer, accel, threads (that rendered),\n"
       "wall time, the reference report's time, primary, secondary and shadow rays, rays per\n"
       "second (every ray), BVH nodes (grid cells) visited per ray, speed-up over the first row. "
       "Markdown by "
@@ -64,7 +70,9 @@ void addBenchCommand(CommandLine& rt) {
       "(--stars LIST) at 400x400 through the BVH and through the grid on every thread, each in\n"
       "a process of its own, and prints for each the build time (CPU), the render's wall time,\n"
       "the process's peak resident size, the bytes per star ((peak - an empty process's peak)\n"
-      "/ stars) and the nodes (cells) visited per ray.\n\n"
+      "/ stars) and the nodes (cells) visited per ray. --scaling teapot does the same for the\n"
+      "course's teapot of about 10^3, 10^4, 10^5 and 10^6 flat triangles (--details LIST, the\n"
+      "teapot's detail d: 64*d^2 - 8*d triangles), Whitted tracer, bytes per triangle.\n\n"
       "Everything is checked before the first ray. A line per row started goes to stderr,\n"
       "the table to stdout (or -o's file). Ctrl-C stops the bench within a row, writes\n"
       "nothing, and exits with code 130. Wall times on a loaded machine are noisy: compare\n"
@@ -96,12 +104,24 @@ void addBenchCommand(CommandLine& rt) {
       ->type_name("FILE.md|.csv|.json")
       ->allow_extra_args(false);  // one file per -o: `-o x.md galaxy` leaves SCENE alone
   command->add_flag("--scaling", args->scaling,
-                    "the galaxy's star scaling instead of the timing table");
+                    "the galaxy's star scaling (SCENE teapot: the teapot's triangle scaling) "
+                    "instead of the timing table");
   addOptional(*command, "--stars", args->stars,
-              "with --scaling: the star counts, comma-separated, each 1..10000000 (default: "
-              "1000,10000,100000,1000000)",
+              "with --scaling: the star counts, comma-separated, each 1..10000000 (default: " +
+                  std::string(DEFAULT_STARS) + ")",
               "LIST")
-      ->check(CLI::Validator([](std::string& list) { return starsError(list); }, ""));
+      ->check(CLI::Validator(
+          [](std::string& list) {
+            return integerListError(list, 1, static_cast<int>(GalaxyParams::MAX_STARS));
+          },
+          ""));
+  addOptional(*command, "--details", args->details,
+              "with --scaling teapot: the teapot's details, comma-separated, each 1.." +
+                  std::to_string(kUtahTeapotMaxDetail) +
+                  " (default: " + std::string(DEFAULT_DETAILS) + ")",
+              "LIST")
+      ->check(CLI::Validator(
+          [](std::string& list) { return integerListError(list, 1, kUtahTeapotMaxDetail); }, ""));
 }
 
 }  // namespace rt::cli

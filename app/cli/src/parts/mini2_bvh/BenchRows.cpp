@@ -2,11 +2,13 @@
 // on one thread; threads; threads + CBR; threads + CBR + BVH) beside the report's own times and
 // the course's other structure, the regular grid, beside them (threads + grid, no report time),
 // then by every stage's tracer through the BVH on every thread; rows taken in turn, the medians
-// kept.
+// kept. The course's teapots have their lecturer's rows instead, his thread counts and times.
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "Bench.h"
@@ -28,21 +30,67 @@ namespace {
 /// 5 min 30 s); --full: the scene's own resolution, the report's for the galaxy.
 constexpr int DEFAULT_WIDTH = 128;
 
-/// The reference report's rows and times (the Java project the course started from): its galaxy
-/// at 1280 x 720 (course catalogue §5); then the regular grid, which the report did not time.
+/// A row's threads: every core (--threads, default one per core), or a fixed count.
+constexpr int EVERY_CORE = 0;
+
+/// A row of the scene's tracer beside someone's time for the same configuration.
 struct ReferenceRow {
   const char* name;
   const char* accel;
-  bool threads;                   ///< every core, or one thread
-  std::optional<double> seconds;  ///< the reference report's time
+  int threads;                    ///< EVERY_CORE, or that many
+  std::optional<double> seconds;  ///< the reference's time
 };
-constexpr ReferenceRow REFERENCE_ROWS[] = {
-    {"no acceleration", "none", false, 4860},   // 1 h 21 min
-    {"threads", "none", true, 1540},            // 25 min 40 s
-    {"threads + CBR", "cbr", true, 837},        // 13 min 57 s
-    {"threads + CBR + BVH", "bvh", true, 407},  // 6 min 47 s
-    {"threads + grid", "grid", true, std::nullopt},
+
+/// The reference report's rows and times (the Java project the course started from): its galaxy
+/// at 1280 x 720 (course catalogue §5); then the regular grid, which the report did not time.
+/// Every scene but the teapots has these rows (without the times).
+constexpr ReferenceRow REPORT_ROWS[] = {
+    {"no acceleration", "none", 1, 4860},             // 1 h 21 min
+    {"threads", "none", EVERY_CORE, 1540},            // 25 min 40 s
+    {"threads + CBR", "cbr", EVERY_CORE, 837},        // 13 min 57 s
+    {"threads + CBR + BVH", "bvh", EVERY_CORE, 407},  // 6 min 47 s
+    {"threads + grid", "grid", EVERY_CORE, std::nullopt},
 };
+
+/// The course lecturer's TeapotTest of 2025 (1000 x 1000, 400 bubbles, no acceleration) timed
+/// with his thread counts, in comments of the file (course catalogue §5): setMultithreading(0),
+/// no threads, 25 s; 2, 3 and 4 threads 13.6, 10.7 and 10.7 s; -2, every core, 9.3 s. (One
+/// worker thread took 25.8 s and parallel streams 9.6 s: the caption says so, no row has them.)
+/// Then the structures, which he did not time there.
+constexpr ReferenceRow LECTURER_ROWS[] = {
+    {"no acceleration", "none", 1, 25},
+    {"2 threads", "none", 2, 13.6},
+    {"3 threads", "none", 3, 10.7},
+    {"4 threads", "none", 4, 10.7},
+    {"threads", "none", EVERY_CORE, 9.3},
+    {"threads + CBR", "cbr", EVERY_CORE, std::nullopt},
+    {"threads + CBR + BVH", "bvh", EVERY_CORE, std::nullopt},
+    {"threads + grid", "grid", EVERY_CORE, std::nullopt},
+};
+
+/// The built-in scenes whose rows carry someone's times, and whose they are.
+struct Reference {
+  std::string_view scene;
+  std::span<const ReferenceRow> rows;
+  std::string_view source;  ///< the caption's "reference: ..."
+};
+
+constexpr std::string_view LECTURER =
+    "the course lecturer's times for his TeapotTest of 2025 (1000x1000 with 400 bubbles, no "
+    "acceleration), in Java on his machine, not this one (one worker thread: 25.8 s; parallel "
+    "streams: 9.6 s)";
+constexpr Reference REFERENCES[] = {
+    {"galaxy", REPORT_ROWS, "the reference report's times for its galaxy at 1280x720"},
+    {"teapot", LECTURER_ROWS, LECTURER},
+    {"bubbles", LECTURER_ROWS, LECTURER},
+};
+
+/// The rows of scene: its reference's, or the report's rows without times.
+Reference referenceOf(std::string_view scene) {
+  for (const Reference& r : REFERENCES)
+    if (r.scene == scene) return r;
+  return {scene, REPORT_ROWS, ""};
+}
 
 /// A row ready to render: its tracer built over the scene and its acceleration.
 struct PlannedRow {
@@ -54,6 +102,8 @@ struct PlannedRow {
 
 int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   if (args.stars) throw UsageError("--stars: only with --scaling (the galaxy's star counts)");
+  if (args.details)
+    throw UsageError("--details: only with --scaling teapot (the teapot's details)");
   SceneArguments sceneArgs = args.scene;
   if (args.full && (sceneArgs.width || sceneArgs.height))
     throw UsageError("--full: the scene's own resolution; give either --full or --width/--height");
@@ -62,19 +112,19 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   const SceneDocument& doc = request.doc;
   const int threads = benchThreads(args);
 
-  // The rows: the reference report's four and the grid's with the scene's tracer, then every
-  // stage's tracer
-  // through the BVH (stage 4's debugging views left out: they do not render the scene's light).
-  // The reference report's times belong to its galaxy only.
-  const bool referenceScene = args.scene.argument == "galaxy";
+  // The rows: the reference's (the report's four and the grid's, or the lecturer's) with the
+  // scene's tracer, then every stage's tracer through the BVH (stage 4's debugging views left
+  // out: they do not render the scene's light). A reference's times belong to its scenes only.
+  const Reference reference = referenceOf(args.scene.argument);
+  const bool timed = !reference.source.empty();
   const TracerKind& sceneTracer = findTracer(doc.render.tracer);
   std::vector<std::pair<BenchRow, const TracerKind*>> plan;
-  for (const ReferenceRow& s : REFERENCE_ROWS)
+  for (const ReferenceRow& s : reference.rows)
     plan.push_back({BenchRow{.name = s.name,
                              .tracer = sceneTracer.name,
                              .accel = s.accel,
-                             .threads = s.threads ? threads : 1,
-                             .referenceSeconds = referenceScene ? s.seconds : std::nullopt},
+                             .threads = s.threads == EVERY_CORE ? threads : s.threads,
+                             .referenceSeconds = timed ? s.seconds : std::nullopt},
                     &sceneTracer});
   for (const TracerKind& kind : tracerKinds())
     if (!kind.debugView)
@@ -126,7 +176,8 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
                    .height = doc.camera.nY,
                    .threads = threads,
                    .machine = machineName(),
-                   .repeat = args.repeat};
+                   .repeat = args.repeat,
+                   .reference = std::string(reference.source)};
   for (std::size_t i = 0; i < n; ++i) {
     rows[i].row.seconds = median(seconds[i]);
     table.rows.push_back(rows[i].row);

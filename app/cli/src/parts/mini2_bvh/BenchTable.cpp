@@ -1,6 +1,7 @@
 // The tables of `rt bench` in Markdown, CSV and JSON.
 #include "BenchTable.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -103,12 +104,14 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
             {"nodesPerRay", jsonNumber(r.nodesPerRay())},
             {"speedup", jsonNumber(table.speedup(r))},
             {"referenceSeconds", r.referenceSeconds ? jsonNumber(*r.referenceSeconds) : Json()}});
-      return formatJson(Json{{"scene", table.scene},
-                             {"width", table.width},
-                             {"height", table.height},
-                             {"threads", table.threads},
-                             {"machine", table.machine},
-                             {"rows", rows}});
+      return formatJson(
+          Json{{"scene", table.scene},
+               {"width", table.width},
+               {"height", table.height},
+               {"threads", table.threads},
+               {"machine", table.machine},
+               {"reference", table.reference.empty() ? Json() : Json(table.reference)},
+               {"rows", rows}});
     }
     case TableFormat::Csv: {
       std::string out = std::string(BENCH_CSV_HEADER) + "\n";
@@ -126,6 +129,7 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
   }
   bool reference = false;
   for (const BenchRow& r : table.rows) reference = reference || r.referenceSeconds.has_value();
+  reference = reference && !table.reference.empty();
   MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "reference", "primary",
                     "secondary", "shadow", "rays/s", "nodes/ray", "speed-up"},
                    {false, false, false, true, true, true, true, true, true, true, true, true});
@@ -138,39 +142,58 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
   return "rt bench " + table.scene + ": " + std::to_string(table.width) + "x" +
          std::to_string(table.height) + ", " + std::to_string(table.threads) +
          " threads for the multi-threaded rows, " + table.machine + "; " + rendersOf(table.repeat) +
-         (reference ? "; reference: the reference report's times for its galaxy at 1280x720" : "") +
-         "\n\n" + md.text();
+         (reference ? "; reference: " + table.reference : "") + "\n\n" + md.text();
+}
+
+std::vector<std::string> scalingKeys(const ScalingKind& kind) {
+  std::string per(kind.per);
+  per[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(per[0])));
+  return {std::string(kind.size),
+          std::string(kind.count),
+          "buildSeconds",
+          "renderSeconds",
+          "peakBytes",
+          "bytesPer" + per,
+          "nodesPerRay",
+          "gridBuildSeconds",
+          "gridRenderSeconds",
+          "gridPeakBytes",
+          "gridBytesPer" + per,
+          "gridCellsPerRay"};
 }
 
 std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
+  const ScalingKind& kind = table.kind;
+  const std::vector<std::string> keys = scalingKeys(kind);
   switch (format) {
     case TableFormat::Json: {
       Json rows = Json::array();
-      for (const ScalingRow& r : table.rows)
-        rows.push_back(Json{{"stars", r.stars},
-                            {"shapes", r.shapes},
-                            {"buildSeconds", jsonNumber(r.bvh.buildSeconds)},
-                            {"renderSeconds", jsonNumber(r.bvh.renderSeconds)},
-                            {"peakBytes", r.bvh.peakBytes},
-                            {"bytesPerStar", r.bvh.bytesPerStar},
-                            {"nodesPerRay", jsonNumber(r.bvh.nodesPerRay)},
-                            {"gridBuildSeconds", jsonNumber(r.grid.buildSeconds)},
-                            {"gridRenderSeconds", jsonNumber(r.grid.renderSeconds)},
-                            {"gridPeakBytes", r.grid.peakBytes},
-                            {"gridBytesPerStar", r.grid.bytesPerStar},
-                            {"gridCellsPerRay", jsonNumber(r.grid.nodesPerRay)}});
-      return formatJson(Json{{"scene", "galaxy"},
+      for (const ScalingRow& r : table.rows) {
+        Json row{{keys[0], r.size}, {keys[1], r.count}};
+        std::size_t k = 2;
+        for (const ScalingFigures* f : {&r.bvh, &r.grid}) {
+          row[keys[k++]] = jsonNumber(f->buildSeconds);
+          row[keys[k++]] = jsonNumber(f->renderSeconds);
+          row[keys[k++]] = f->peakBytes;
+          row[keys[k++]] = f->bytesPer;
+          row[keys[k++]] = jsonNumber(f->nodesPerRay);
+        }
+        rows.push_back(std::move(row));
+      }
+      return formatJson(Json{{"scene", kind.scene},
                              {"width", table.width},
                              {"height", table.height},
                              {"scaling", rows}});
     }
     case TableFormat::Csv: {
-      std::string out = std::string(SCALING_CSV_HEADER) + "\n";
+      std::string out;
+      for (const std::string& key : keys) out += (out.empty() ? "" : ",") + key;
+      out += "\n";
       for (const ScalingRow& r : table.rows) {
-        out += std::to_string(r.stars) + "," + std::to_string(r.shapes);
+        out += std::to_string(r.size) + "," + std::to_string(r.count);
         for (const ScalingFigures* f : {&r.bvh, &r.grid})
           out += "," + formatNumber(f->buildSeconds) + "," + formatNumber(f->renderSeconds) + "," +
-                 std::to_string(f->peakBytes) + "," + std::to_string(f->bytesPerStar) + "," +
+                 std::to_string(f->peakBytes) + "," + std::to_string(f->bytesPer) + "," +
                  formatNumber(f->nodesPerRay);
         out += "\n";
       }
@@ -179,28 +202,36 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
     case TableFormat::Markdown:
       break;
   }
-  MarkdownTable md(
-      {"stars", "shapes", "BVH build", "BVH render", "BVH peak", "BVH bytes/star", "nodes/ray",
-       "grid build", "grid render", "grid peak", "grid bytes/star", "cells/ray"},
-      std::vector<bool>(12, true));
+  const std::string per(kind.per);
+  MarkdownTable md({std::string(kind.size), std::string(kind.count), "BVH build", "BVH render",
+                    "BVH peak", "BVH bytes/" + per, "nodes/ray", "grid build", "grid render",
+                    "grid peak", "grid bytes/" + per, "cells/ray"},
+                   std::vector<bool>(12, true));
   for (const ScalingRow& r : table.rows) {
-    std::vector<std::string> cells{std::to_string(r.stars), std::to_string(r.shapes)};
+    std::vector<std::string> cells{std::to_string(r.size), std::to_string(r.count)};
     for (const ScalingFigures* f : {&r.bvh, &r.grid})
       cells.insert(cells.end(), {formatDuration(f->buildSeconds), formatDuration(f->renderSeconds),
-                                 mebibytes(f->peakBytes), std::to_string(f->bytesPerStar),
+                                 mebibytes(f->peakBytes), std::to_string(f->bytesPer),
                                  fixed(f->nodesPerRay, 2)});
     md.add(cells);
   }
-  return "rt bench --scaling: the galaxy without diffusion, " + std::to_string(table.width) + "x" +
-         std::to_string(table.height) +
-         " (the middle of the reference report's view), beams tracer, through the BVH and through "
-         "the grid, " +
-         std::to_string(table.threads) + " threads, " + table.machine + "; " +
-         rendersOf(table.repeat) +
-         "; each galaxy and structure in a process of its own: build in CPU time, render in wall "
-         "time, "
-         "peak = its ru_maxrss, bytes per star = (peak - " +
-         mebibytes(table.baselineBytes) + " of an empty process) / stars\n\n" + md.text();
+  const std::string what =
+      kind.scene == TEAPOT_SCALING.scene
+          ? "rt bench --scaling teapot: the course's teapot of 64*d^2 - 8*d flat triangles "
+            "(detail d), " +
+                std::to_string(table.width) + "x" + std::to_string(table.height) +
+                " (the course's view), Whitted tracer"
+          : "rt bench --scaling: the galaxy without diffusion, " + std::to_string(table.width) +
+                "x" + std::to_string(table.height) +
+                " (the middle of the reference report's view), beams tracer";
+  return what + ", through the BVH and through the grid, " + std::to_string(table.threads) +
+         " threads, " + table.machine + "; " + rendersOf(table.repeat) + "; each " +
+         std::string(kind.scene) +
+         " and structure in a process of its own: build in CPU time, render in wall time, peak = "
+         "its ru_maxrss, bytes per " +
+         per + " = (peak - " + mebibytes(table.baselineBytes) + " of an empty process) / " +
+         (kind.scene == GALAXY_SCALING.scene ? "stars" : std::string(kind.count)) + "\n\n" +
+         md.text();
 }
 
 }  // namespace rt::cli

@@ -35,30 +35,46 @@ struct BenchTable {
   int threads = 1;      ///< the threads the multi-threaded rows asked for
   std::string machine;  ///< "AMD EPYC 7B13, 2 CPUs"
   int repeat = 1;       ///< renders per row; seconds are their medians
+  /// Whose the rows' referenceSeconds are, and what they timed ("" when no row has one).
+  std::string reference{};
   std::vector<BenchRow> rows{};
 
   /// The first row's wall time over row's (1 for the first row itself; 0 for a row of no time).
   double speedup(const BenchRow& row) const;
 };
 
-/// One structure's figures for one galaxy of the star scaling, measured in a process of its own.
+/// What a scaling scales, and the names its table gives it: the galaxy's stars (bytes per star)
+/// or the teapot's detail (bytes per triangle).
+struct ScalingKind {
+  std::string_view scene;  ///< "galaxy", "teapot": the JSON's scene
+  std::string_view size;   ///< the parameter scaled: "stars", "detail"
+  std::string_view count;  ///< what the scene is counted in: "shapes", "triangles"
+  std::string_view per;    ///< what the bytes are counted per: "star", "triangle"
+};
+inline constexpr ScalingKind GALAXY_SCALING{"galaxy", "stars", "shapes", "star"};
+inline constexpr ScalingKind TEAPOT_SCALING{"teapot", "detail", "triangles", "triangle"};
+
+/// One structure's figures for one scene of a scaling, measured in a process of its own.
 struct ScalingFigures {
-  double buildSeconds = 0;        ///< the structure's build: CPU time (it runs on one thread)
-  double renderSeconds = 0;       ///< wall time of the render: the median of the repeats
-  std::int64_t peakBytes = 0;     ///< the process's peak resident size (ru_maxrss)
-  std::int64_t bytesPerStar = 0;  ///< (peakBytes - the empty process's) / stars, at least 0
-  double nodesPerRay = 0;         ///< BVH nodes (grid cells) visited per ray, every ray
+  double buildSeconds = 0;     ///< the structure's build: CPU time (it runs on one thread)
+  double renderSeconds = 0;    ///< wall time of the render: the median of the repeats
+  std::int64_t peakBytes = 0;  ///< the process's peak resident size (ru_maxrss)
+  /// (peakBytes - the empty process's) per star (galaxy) or per triangle (teapot), at least 0
+  std::int64_t bytesPer = 0;
+  double nodesPerRay = 0;  ///< BVH nodes (grid cells) visited per ray, every ray
 };
 
-/// One galaxy of the star scaling, through the BVH and through the grid.
+/// One scene of a scaling, through the BVH and through the grid.
 struct ScalingRow {
-  long stars = 0;            ///< the galaxy's stars parameter
-  std::uint64_t shapes = 0;  ///< every shape of the scene: stars, suns, core, box, frame, ...
+  long size = 0;            ///< the scaled parameter: the galaxy's stars, the teapot's detail
+  std::uint64_t count = 0;  ///< the galaxy's shapes (stars, suns, core, box, frame, ...), or
+                            ///< the teapot's triangles
   ScalingFigures bvh;
   ScalingFigures grid;
 };
 
 struct ScalingTable {
+  ScalingKind kind = GALAXY_SCALING;
   int width = 0, height = 0;
   int threads = 1;  ///< the threads the renders asked for
   std::string machine;
@@ -73,12 +89,13 @@ struct ScalingTable {
 std::string formatBenchTable(const BenchTable& table, TableFormat format);
 std::string formatScalingTable(const ScalingTable& table, TableFormat format);
 
-/// The CSV header lines (the tests and the docs quote them).
+/// The CSV header line of the timing table (the tests and the docs quote it).
 inline constexpr std::string_view BENCH_CSV_HEADER =
     "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,speedup,"
     "referenceSeconds";
-inline constexpr std::string_view SCALING_CSV_HEADER =
-    "stars,shapes,buildSeconds,renderSeconds,peakBytes,bytesPerStar,nodesPerRay,"
-    "gridBuildSeconds,gridRenderSeconds,gridPeakBytes,gridBytesPerStar,gridCellsPerRay";
+
+/// The keys of a scaling's row, in order: its CSV header's fields and its JSON objects' keys
+/// (the galaxy's: stars, shapes, buildSeconds, ..., bytesPerStar, ..., gridCellsPerRay).
+std::vector<std::string> scalingKeys(const ScalingKind& kind);
 
 }  // namespace rt::cli

@@ -1,10 +1,11 @@
 #pragma once
-/// @file GalaxyScaling.h
+/// @file Scaling.h
 /// The renders the benchmarks time, written once for mini2_render_bench and `rt bench
 /// --scaling`: one image rendered `repeat` times on one or two thread counts, taken in turn so
-/// that a change of the machine's load hits both alike (timeRenders); and one galaxy of the star
-/// scaling generated, built and rendered in a process of its own, so that its peak memory is
-/// its own (measureGalaxy). They print nothing and assert nothing.
+/// that a change of the machine's load hits both alike (timeRenders); and one scene of a scaling
+/// (the galaxy of n stars, the course's teapot of detail d) generated, built and rendered in a
+/// process of its own, so that its peak memory is its own (measureGalaxy, measureTeapot). They
+/// print nothing and assert nothing.
 
 #include <atomic>
 #include <cstdint>
@@ -50,24 +51,32 @@ struct TimedRenders {
 ///         what renderImage throws.
 TimedRenders timeRenders(const RenderContext& context, const TimingOptions& options);
 
-/// One galaxy of the star scaling, without diffusion, seen through the middle of the reference
-/// report's view.
-struct GalaxyMeasurement {
-  std::uint64_t shapes = 0;    ///< every shape of the scene: stars, suns, core, box, frame, ...
-  double generateSeconds = 0;  ///< galaxy(params): CPU time
-  double buildSeconds = 0;     ///< the BVH's (or grid's) build (one thread): CPU time
+/// One scene of a scaling, generated, built and rendered in a process of its own.
+struct ScalingMeasurement {
+  std::uint64_t shapes = 0;          ///< the scene's shapes: stars, suns, core, box, frame, ...
+  std::uint64_t triangles = 0;       ///< its meshes' triangles: the teapot's
+  double generateSeconds = 0;        ///< the scene's generation: CPU time
+  double buildSeconds = 0;           ///< the BVH's (or grid's) build (one thread): CPU time
   std::uint64_t structureBytes = 0;  ///< the BVH's (or grid's) memory
-  TimedRenders renders;        ///< the beams tracer through the structure, one camera ray per pixel
-  std::int64_t peakBytes = 0;  ///< the child process's peak resident size (ru_maxrss)
+  std::uint64_t meshBytes = 0;       ///< the meshes' arrays (vertices, indices, normals)
+  TimedRenders renders;              ///< the scene's tracer through the structure, a ray per pixel
+  std::int64_t peakBytes = 0;        ///< the child process's peak resident size (ru_maxrss)
 };
 
-/// Measures the galaxy of `stars` stars at nX x nY in a child process of its own
+/// Measures the galaxy of `stars` stars without diffusion at nX x nY, seen through the middle of
+/// the reference report's view, with the beams tracer, in a child process of its own
 /// (runInChildProcess): generated, its BVH (or grid) built, rendered by timeRenders.
 /// @returns nothing when options.stop was raised (the child is killed, or its render stopped).
 /// @throws std::runtime_error with the child's message when it failed (invalid parameters,
 ///         say); std::system_error when the process cannot be made.
-std::optional<GalaxyMeasurement> measureGalaxy(long stars, int nX, int nY,
-                                               const TimingOptions& options,
-                                               GalaxyAccel accel = GalaxyAccel::Bvh);
+std::optional<ScalingMeasurement> measureGalaxy(long stars, int nX, int nY,
+                                                const TimingOptions& options,
+                                                ScalingAccel accel = ScalingAccel::Bvh);
+
+/// The same for the course's teapot of `detail` (TeapotRender: 64·d² − 8·d flat triangles, the
+/// course's light and view, the Whitted tracer).
+std::optional<ScalingMeasurement> measureTeapot(int detail, int nX, int nY,
+                                                const TimingOptions& options,
+                                                ScalingAccel accel = ScalingAccel::Bvh);
 
 }  // namespace rt

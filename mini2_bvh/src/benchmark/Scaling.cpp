@@ -1,7 +1,9 @@
-#include "benchmark/GalaxyScaling.h"
+#include "benchmark/Scaling.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -61,24 +63,57 @@ TimedRenders timeRenders(const RenderContext& context, const TimingOptions& opti
   return t;
 }
 
-std::optional<GalaxyMeasurement> measureGalaxy(long stars, int nX, int nY,
-                                               const TimingOptions& options, GalaxyAccel accel) {
-  const auto measured = measureInChildProcess<GalaxyMeasurement>(
-      [stars, nX, nY, &options, accel] {
-        const GalaxyRender g(GalaxyParams{.stars = stars, .diffusion = false}, accel);
-        const Camera camera = referenceView(g.setup, nX, nY);
-        const CenterSampler sampler;
-        return GalaxyMeasurement{.shapes = g.setup.scene.geometries.size(),
-                                 .generateSeconds = g.generateSeconds,
-                                 .buildSeconds = g.buildSeconds,
-                                 .structureBytes = g.structureBytes(),
-                                 .renders = timeRenders({camera, *g.tracer, sampler}, options)};
-      },
-      options.stop);
+namespace {
+
+/// What one scene of a scaling cost: its renders through its structure (in the child process).
+ScalingMeasurement measureRenders(const LitScene& scene, double generateSeconds,
+                                  const TimedStructure& structure, const RayTracer& tracer,
+                                  const Camera& camera, const TimingOptions& options) {
+  std::uint64_t meshBytes = 0;
+  for (const PlacedMesh& m : scene.geometries.meshes()) meshBytes += m.mesh->memoryBytes();
+  const CenterSampler sampler;
+  return {.shapes = scene.geometries.size(),
+          .triangles = scene.geometries.triangleCount(),
+          .generateSeconds = generateSeconds,
+          .buildSeconds = structure.buildSeconds,
+          .structureBytes = structure.memoryBytes(),
+          .meshBytes = meshBytes,
+          .renders = timeRenders({camera, tracer, sampler}, options)};
+}
+
+/// Runs work in a child process of its own; its measurement with the child's peak, or nothing
+/// when stopped.
+std::optional<ScalingMeasurement> measureInChild(const std::function<ScalingMeasurement()>& work,
+                                                 const std::atomic<bool>* stop) {
+  const auto measured = measureInChildProcess<ScalingMeasurement>(work, stop);
   if (!measured || measured->value.renders.interrupted) return std::nullopt;
-  GalaxyMeasurement m = measured->value;
+  ScalingMeasurement m = measured->value;
   m.peakBytes = measured->peakBytes;
   return m;
+}
+
+}  // namespace
+
+std::optional<ScalingMeasurement> measureGalaxy(long stars, int nX, int nY,
+                                                const TimingOptions& options, ScalingAccel accel) {
+  return measureInChild(
+      [stars, nX, nY, &options, accel] {
+        const GalaxyRender g(GalaxyParams{.stars = stars, .diffusion = false}, accel);
+        return measureRenders(g.setup.scene, g.generateSeconds, g.structure, *g.tracer,
+                              referenceView(g.setup, nX, nY), options);
+      },
+      options.stop);
+}
+
+std::optional<ScalingMeasurement> measureTeapot(int detail, int nX, int nY,
+                                                const TimingOptions& options, ScalingAccel accel) {
+  return measureInChild(
+      [detail, nX, nY, &options, accel] {
+        const TeapotRender t(detail, accel);
+        return measureRenders(t.setup.scene, t.generateSeconds, t.structure, *t.tracer,
+                              middleView(t.setup.camera, nX, nY), options);
+      },
+      options.stop);
 }
 
 }  // namespace rt
