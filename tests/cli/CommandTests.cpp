@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
+#include "geometries/TriangleMesh.h"
 #include "glossy/DemoTable.h"
 #include "lighting/CourseScenes.h"
 #include "lighting/PhongTracer.h"
@@ -451,6 +453,90 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "0.7071067811865475, 0]},\n"
             "  \"hits\": [],\n"
             "  \"color\": [0, 0, 0]\n"
+            "}\n");
+}
+
+/// probeScene's plane z = 9 (shape 0) with two meshes in front of it and a shape added after
+/// them: mesh 0 ("pot", flat), two triangles of the square [-4,4]^2 in z = 3, split along its
+/// diagonal; mesh 1 (no name, smooth), one triangle in z = 6 with corners (-3,-1.5), (5,-1.5),
+/// (-3,6.5) and normals (0,0,1), (1,0,0), (1,0,0); a sphere far away (shape 1). The primitives:
+/// shapes 0 and 1, mesh 0's triangles 2 and 3, mesh 1's triangle 4.
+SceneDocument probeMeshScene() {
+  SceneDocument doc = litDocument(LitScene{}, CameraSpec{});
+  LitScene& scene = litScene(doc);
+  scene.ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
+  scene.add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
+  scene.addMesh(
+      std::make_shared<const TriangleMesh>(
+          std::vector<Point>{Point(-4, -4, 3), Point(4, -4, 3), Point(4, 4, 3), Point(-4, 4, 3)},
+          std::vector<TriangleMesh::Indices>{{0, 1, 2}, {0, 2, 3}}),
+      scene.addAppearance(Color(300, 20, 20)));
+  scene.addMesh(std::make_shared<const TriangleMesh>(
+                    std::vector<Point>{Point(-3, -1.5, 6), Point(5, -1.5, 6), Point(-3, 6.5, 6)},
+                    std::vector<TriangleMesh::Indices>{{0, 1, 2}},
+                    std::vector<Double3>{{0, 0, 1}, {1, 0, 0}, {1, 0, 0}}),
+                0);
+  scene.add(Sphere(Point(100, 100, 100), 1));
+  doc.geometryNames = {{0, "back"}};
+  doc.meshNames = {{0, "pot"}};
+  return doc;
+}
+
+TEST(ProbeTests, probeJsonNamesMeshTriangles) {
+  const SceneDocument doc = probeMeshScene();
+  const PhongTracer tracer(litScene(doc));
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the ray (-1,0.5,-2) + t(0,0,1) meets mesh 0's triangle 1 (primitive 3) at t = 5, its
+  // flat normal (0,0,1), named by its mesh; mesh 1's triangle 0 (primitive 4, no name) at t = 8,
+  // where its barycentric coordinates are (0.25, 0.25): the normal 0.5·(0,0,1) + 0.5·(1,0,0),
+  // normalised; then the plane, a shape, as before. The colour is mesh 0's look: (300,20,20) +
+  // Ia·kA = (350,70,70). A mesh triangle's hit, longer than 100 columns, has a member per line
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\n"
+            "      \"t\": 5,\n"
+            "      \"point\": [-1, 0.5, 3],\n"
+            "      \"normal\": [0, 0, 1],\n"
+            "      \"geometry\": 3,\n"
+            "      \"mesh\": 0,\n"
+            "      \"triangle\": 1,\n"
+            "      \"name\": \"pot\"\n"
+            "    },\n"
+            "    {\n"
+            "      \"t\": 8,\n"
+            "      \"point\": [-1, 0.5, 6],\n"
+            "      \"normal\": [0.7071067811865475, 0, 0.7071067811865475],\n"
+            "      \"geometry\": 4,\n"
+            "      \"mesh\": 1,\n"
+            "      \"triangle\": 0,\n"
+            "      \"name\": null\n"
+            "    },\n"
+            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"back\"}\n"
+            "  ],\n"
+            "  \"color\": [350, 70, 70]\n"
+            "}\n");
+  // =============== Boundary Values Tests ==================
+  // TC11: mesh 0's triangle 0 (below the diagonal), the first mesh triangle: primitive 2
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(3, -3, 0), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [3, -3, 0], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\n"
+            "      \"t\": 3,\n"
+            "      \"point\": [3, -3, 3],\n"
+            "      \"normal\": [0, 0, 1],\n"
+            "      \"geometry\": 2,\n"
+            "      \"mesh\": 0,\n"
+            "      \"triangle\": 0,\n"
+            "      \"name\": \"pot\"\n"
+            "    },\n"
+            "    {\"t\": 9, \"point\": [3, -3, 9], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"back\"}\n"
+            "  ],\n"
+            "  \"color\": [350, 70, 70]\n"
             "}\n");
 }
 
