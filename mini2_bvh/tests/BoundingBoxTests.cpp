@@ -1,11 +1,16 @@
 // mini2: the bounding box of every shape, exact values, and random points of each surface lie
-// inside it; planes and tubes have none.
+// inside it; planes and tubes have none. A mesh triangle's box is a Triangle's; a primitive's is
+// its shape's or its mesh triangle's.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <vector>
 
 #include "bvh/BoundingBox.h"
+#include "geometries/UtahTeapot.h"
+#include "intersections/Geometries.h"
 
 #include "RandomScenes.h"
 
@@ -124,6 +129,36 @@ TEST(BoundingBoxTests, unboundedAndVariant) {
   EXPECT_EQ(boundingBox(Geometry(sphere)), boundingBox(sphere));
   EXPECT_EQ(boundingBox(Geometry(triangle)), boundingBox(triangle));
   EXPECT_EQ(boundingBox(Geometry(cylinder)), boundingBox(cylinder));
+}
+
+TEST(BoundingBoxTests, meshTriangles) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a mesh triangle's box is the box of a Triangle of its corners, for every triangle of
+  // the teapot (its corners in every order of minimum and maximum)
+  const TriangleMesh teapot = utahTeapot(4);
+  for (std::size_t t = 0; t < teapot.triangleCount(); ++t) {
+    const std::array<Point, 3> c = teapot.corners(t);
+    EXPECT_EQ(boundingBox(teapot, t), boundingBox(Triangle(c[0], c[1], c[2]))) << "triangle " << t;
+  }
+  // TC02: the tilted triangle of flatShapes as triangle 1 of a mesh, its corners shared
+  const TriangleMesh mesh({Point(0, 0, 0), Point(1, -1, 2), Point(-3, 4, 0), Point(2, 2, -5)},
+                          {{0, 1, 2}, {1, 2, 3}});
+  EXPECT_EQ(boundingBox(mesh, 1), Aabb(Double3(-3, -1, -5), Double3(2, 4, 2)));
+
+  // TC03: a primitive's box: a shape's own (none for a plane), a mesh triangle's its triangle's,
+  // with shapes added after the mesh numbered first
+  Geometries g;
+  g.addMesh(std::make_shared<const TriangleMesh>(mesh));
+  g.add(Sphere(Point(1, 2, 3), 2), Plane(Point(0, 0, 0), Vector(0, 0, 1)));
+  const Primitives p = g.primitives();
+  EXPECT_EQ(boundingBox(p, 0), boundingBox(Sphere(Point(1, 2, 3), 2)));
+  EXPECT_FALSE(boundingBox(p, 1).has_value());
+  EXPECT_EQ(boundingBox(p, 2), Aabb(Double3(-3, -1, 0), Double3(1, 4, 2)));
+  EXPECT_EQ(boundingBox(p, 3), boundingBox(mesh, 1));
+  // =============== Boundary Values Tests ==================
+  // TC11: a triangle flat in an axis has a box of zero thickness on it
+  const TriangleMesh flat({Point(0, 0, 1), Point(1, 0, 1), Point(0, 1, 1)}, {{0, 1, 2}});
+  EXPECT_EQ(boundingBox(flat, 0), Aabb(Double3(0, 0, 1), Double3(1, 1, 1)));
 }
 
 }  // namespace

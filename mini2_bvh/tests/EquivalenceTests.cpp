@@ -2,11 +2,12 @@
 // shapes: closestHit returns the same t (compared with ==) and the same index, forEachHit visits
 // the same multiset of (t, index) hits and stops when told. Random scenes and rays with fixed
 // seeds; each query is also repeated with tMax exactly at its closest hit (the inclusive bound) and
-// relaunched from that hit point.
+// relaunched from that hit point. Triangle meshes' triangles are primitives like the shapes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "geometries/UtahTeapot.h"
 #include "grid/Grid.h"
 
 #include "RandomScenes.h"
@@ -159,6 +161,23 @@ TEST(EquivalenceTests, randomScenes) {
     const Aabb box(Double3(-13), Double3(13));
     expectEquivalent(scene, test::randomQueries(random, 2000, box), random);
   }
+  // TC07: triangle meshes among shapes: the teapot at detail 8 (4032 triangles) standing on a
+  // plane in its bottom's plane (exact ties), spheres around it, shapes added after the mesh
+  // (copies of its triangles as Triangle shapes: ties between a shape and a mesh triangle, the
+  // mesh's triangles numbered after them), and a second teapot at detail 3 beside it
+  {
+    Random random(808);
+    const auto teapot = std::make_shared<const TriangleMesh>(utahTeapot(8));
+    const Aabb box(Double3(-6, -6, -2), Double3(10, 6, 6));
+    Geometries scene;
+    test::addSpheres(scene, random, 150, box, 0.2, 1.5);
+    scene.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)));
+    scene.addMesh(teapot);
+    test::addTriangleCopies(scene, random, *teapot, 100);
+    scene.addMesh(test::movedMesh(utahTeapot(3), Double3(6, 1, 0.5)));
+    ASSERT_EQ(scene.primitiveCount(), 150u + 1 + 100 + 4032 + utahTeapotTriangleCount(3));
+    expectEquivalent(scene, test::randomQueries(random, 600, box), random);
+  }
 }
 
 TEST(EquivalenceTests, boundaryScenes) {
@@ -195,6 +214,23 @@ TEST(EquivalenceTests, boundaryScenes) {
     Geometries two;
     two.add(Sphere(Point(-10, 0, 0), 3), Sphere(Point(10, 0, 0), 3));
     expectEquivalent(two, queries, random);
+  }
+  // TC16: a mesh of one triangle and nothing else (a tree of one leaf of one triangle)
+  {
+    Geometries one;
+    one.addMesh(std::make_shared<const TriangleMesh>(
+        std::vector<Point>{Point(-20, -20, 0), Point(20, -20, 5), Point(0, 20, -5)},
+        std::vector<TriangleMesh::Indices>{{0, 1, 2}}));
+    expectEquivalent(one, queries, random);
+  }
+  // TC17: only mesh triangles, no shape: the teapot scaled up to the box
+  {
+    const TriangleMesh small = utahTeapot(4);
+    std::vector<Point> vertices;
+    for (const Point& v : small.vertices()) vertices.emplace_back(v.xyz() * 8);
+    Geometries only;
+    only.addMesh(std::make_shared<const TriangleMesh>(std::move(vertices), small.triangles()));
+    expectEquivalent(only, queries, random);
   }
 }
 

@@ -1,10 +1,14 @@
 // mini2: what the queries cost, counted in QueryCounts: the CBR skips the shapes whose box the
-// ray misses or enters after the best hit, the BVH visits few nodes and tests few shapes; and
-// neither query allocates.
+// ray misses or enters after the best hit, the BVH visits few nodes and tests few shapes (mesh
+// triangles too); and neither query allocates.
 #include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "geometries/UtahTeapot.h"
 #include "grid/Grid.h"
 #include "support/AllocationCounter.h"
 
@@ -88,15 +92,56 @@ TEST(QueryCountTests, bvh) {
   EXPECT_GT(fast.nodesVisited, 1000u);
 }
 
+TEST(QueryCountTests, meshTriangles) {
+  // The teapot at detail 8 (4032 triangles) on the plane z = 0, 1000 rays around it: each exact
+  // test of a mesh triangle is counted as a shape's.
+  Geometries scene;
+  scene.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)));
+  scene.addMesh(std::make_shared<const TriangleMesh>(utahTeapot(8)));
+  ASSERT_EQ(scene.primitiveCount(), 4033u);
+  test::Random random(9);
+  const std::vector<test::Query> queries =
+      test::randomQueries(random, 1000, Aabb(Double3(-4, -3, 0), Double3(4, 3, 3.5)));
+  const Cbr cbr(scene);
+  const Bvh bvh(scene);
+  const Grid grid(scene);
+  QueryCounts linear, boxed, tree, cells;
+  for (const test::Query& q : queries) {
+    scene.closestHit(q.ray, q.tMax, &linear);
+    cbr.closestHit(q.ray, q.tMax, &boxed);
+    bvh.closestHit(q.ray, q.tMax, &tree);
+    grid.closestHit(q.ray, q.tMax, &cells);
+  }
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the linear scan tests every primitive, shape and triangle, for every ray
+  EXPECT_EQ(linear, (QueryCounts{1000u * 4033u, 0}));
+  // TC02: the CBR tests every triangle's box (the plane has none) and far fewer triangles
+  EXPECT_EQ(boxed.nodesVisited, 1000u * 4032u);
+  EXPECT_LT(boxed.shapeTests * 10, linear.shapeTests);
+  // TC03: the BVH and the grid test under 2 % of the triangles the linear scan tests, visiting
+  // nodes or cells
+  EXPECT_LT(tree.shapeTests * 50, linear.shapeTests);
+  EXPECT_GT(tree.nodesVisited, 1000u);
+  EXPECT_LT(cells.shapeTests * 50, linear.shapeTests);
+  EXPECT_GT(cells.nodesVisited, 1000u);
+  // =============== Boundary Values Tests ==================
+  // TC11: a ray above the teapot's box (z = 10): the BVH tests its root's box and only the plane
+  QueryCounts above;
+  EXPECT_FALSE(bvh.closestHit(Ray(Point(-10, 0, 10), Vector(1, 0, 0)), INFINITE_DISTANCE, &above)
+                   .has_value());
+  EXPECT_EQ(above, (QueryCounts{1, 1}));
+}
+
 TEST(QueryCountTests, noAllocationPerRay) {
-  // TC01: closestHit and forEachHit of the CBR, the BVH and the grid allocate nothing (the counter
-  // works: one operator new counts one)
+  // TC01: closestHit and forEachHit of the CBR, the BVH and the grid allocate nothing, over
+  // shapes and mesh triangles (the counter works: one operator new counts one)
   EXPECT_EQ(1, testing::allocationsDuring([] { ::operator delete(::operator new(16)); }));
   test::Random random(8);
   const Aabb box(Double3(-30), Double3(30));
   Geometries scene;
   test::addMixedShapes(scene, random, 500, box);
   test::addUnbounded(scene, box);
+  scene.addMesh(test::movedMesh(utahTeapot(6), Double3(0, 0, -1)));
   const Bvh bvh(scene);
   const Cbr cbr(scene);
   const Grid grid(scene);

@@ -3,13 +3,17 @@
 //
 // Scenes: spheres only; a mix of every bounded shape (spheres, triangles, axis-aligned and tilted
 // rectangles on integer coordinates, so that faces are exactly flat and rays can start exactly on
-// them, and cylinders); copies of shapes (exact ties between two indices); planes and tubes.
+// them, and cylinders); copies of shapes (exact ties between two indices); planes and tubes;
+// triangle meshes moved elsewhere, and copies of their triangles as shapes.
 // Rays: from outside towards the scene, from inside it, along the axes or parallel to a
 // coordinate plane, from the points where earlier rays hit, with infinite or finite tMax.
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "bvh/Aabb.h"
@@ -134,6 +138,30 @@ inline void addUnbounded(Geometries& g, const Aabb& box) {
   g.add(Plane(Point(box.hi + Double3(1)), Vector(1, 1, 1)));
   g.add(Tube(1.5, Ray(Point(c), Vector(0, 0, 1))));
   g.add(Tube(0.75, Ray(Point(c + Double3(3, 0, 0)), Vector(1, 2, 0))));
+}
+
+/// The mesh's vertices moved by offset, its triangles and normals kept: a second mesh of the
+/// same shape elsewhere.
+inline std::shared_ptr<const TriangleMesh> movedMesh(const TriangleMesh& mesh,
+                                                     const Double3& offset) {
+  std::vector<Point> vertices;
+  vertices.reserve(mesh.vertexCount());
+  for (const Point& v : mesh.vertices()) vertices.emplace_back(v.xyz() + offset);
+  std::vector<Double3> normals;
+  for (const Vector& n : mesh.normals()) normals.push_back(n.xyz());
+  return std::make_shared<const TriangleMesh>(std::move(vertices), mesh.triangles(),
+                                              std::move(normals));
+}
+
+/// Copies of `copies` triangles of mesh, chosen at random, as Triangle shapes: exact ties
+/// between a shape and a mesh triangle.
+inline void addTriangleCopies(Geometries& g, Random& random, const TriangleMesh& mesh,
+                              std::uint32_t copies) {
+  for (std::uint32_t i = 0; i < copies; ++i) {
+    const std::array<Point, 3> c =
+        mesh.corners(static_cast<std::size_t>(random.integer(0, int(mesh.triangleCount()) - 1)));
+    g.add(Triangle(c[0], c[1], c[2]));
+  }
 }
 
 /// A query: a ray and its maximum distance.

@@ -1,5 +1,6 @@
 // mini2: the tile pool. The image and the ray counts are the same bits for any number of threads
-// and any tile size (sampled scenes included, through the BVH); a stop is seen within a tile row;
+// and any tile size (sampled scenes included, through the BVH; the same image through the grid,
+// the CBR and the linear scan; a triangle mesh among them); a stop is seen within a tile row;
 // a tracer's exception arrives on the calling thread after every thread has been joined;
 // progress is reported once per tile; bad options are refused. No test measures time.
 #include <gmock/gmock.h>
@@ -15,7 +16,9 @@
 #include <variant>
 
 #include "bvh/Bvh.h"
+#include "bvh/Cbr.h"
 #include "camera/Camera.h"
+#include "geometries/UtahTeapot.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
 #include "glossy/Samplers.h"
@@ -43,14 +46,15 @@ std::string firstDifference(const Image& a, const Image& b) {
   return "";
 }
 
-/// A scene seen through the BVH, through the grid and through the linear Geometries, with a
-/// sampler.
+/// A scene seen through the BVH, through the grid, through the CBR and through the linear
+/// Geometries, with a sampler.
 struct SampledScene {
   std::string name;
   std::unique_ptr<LitScene> scene;
   std::unique_ptr<Bvh> bvh;
   std::unique_ptr<Grid> grid;
-  std::unique_ptr<RayTracer> linear, accelerated, gridded;
+  std::unique_ptr<Cbr> cbr;
+  std::unique_ptr<RayTracer> linear, accelerated, gridded, boxed;
   std::unique_ptr<PixelSampler> sampler;
   Camera camera;
 };
@@ -65,6 +69,8 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
                  nullptr,
                  nullptr,
                  nullptr,
+                 nullptr,
+                 nullptr,
                  std::move(sampler),
                  camera.builder().build()};
   s.bvh = std::make_unique<Bvh>(s.scene->geometries);
@@ -72,6 +78,8 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
   s.accelerated = std::make_unique<Tracer>(*s.scene, s.bvh.get());
   s.grid = std::make_unique<Grid>(s.scene->geometries);
   s.gridded = std::make_unique<Tracer>(*s.scene, s.grid.get());
+  s.cbr = std::make_unique<Cbr>(s.scene->geometries);
+  s.boxed = std::make_unique<Tracer>(*s.scene, s.cbr.get());
   return s;
 }
 
@@ -123,6 +131,46 @@ SampledScene mirrorScene() {
                                      setup.camera, std::make_unique<CenterSampler>());
 }
 
+/// The course's teapot as a triangle mesh (992 triangles, smooth normals) on a reflecting floor
+/// in the plane of its bottom, a mirror sphere and a glass sphere beside it, a point light and a
+/// spot light with a size (soft shadows through the mesh), 24 x 24 pixels, 2 x 2 jittered samples.
+SampledScene teapotScene() {
+  LitScene scene;
+  scene.ambientLight = AmbientLight(Color(40, 40, 40), 0.2);
+  Material pot;
+  pot.kD = Double3(0.5);
+  pot.kS = Double3(0.5);
+  pot.shininess = 60;
+  scene.addMesh(std::make_shared<const TriangleMesh>(utahTeapot(4)),
+                scene.addAppearance(Color(60, 10, 0), pot));
+  Material floor;
+  floor.kD = Double3(0.6);
+  floor.kR = Double3(0.2);
+  scene.add(Plane(Point(0, 0, 0), Vector(0, 0, 1)), Color(10, 10, 10), floor);
+  Material mirror;
+  mirror.kR = Double3(0.8);
+  scene.add(Sphere(Point(4, 3, 1), 1), Color::BLACK, mirror);
+  Material glass;
+  glass.kS = Double3(0.3);
+  glass.shininess = 40;
+  glass.kT = Double3(0.7);
+  glass.ior = 1.5;
+  scene.add(Sphere(Point(-4, 3, 1.2), 1.2), Color(0, 0, 20), glass);
+  scene.addLight(PointLight(Color(400, 400, 400), Point(3, 6, 8))
+                     .setKl(0.01)
+                     .setKq(0.001)
+                     .setRadius(1)
+                     .setShadowSamples(3));
+  scene.addLight(SpotLight(Color(300, 200, 100), Point(-5, -6, 6), Vector(1, 1, -1))
+                     .setKl(0.01)
+                     .setRadius(0.5)
+                     .setShadowSamples(2));
+  return sampledScene<BeamTracer>(
+      "teapot mesh, soft shadows, mirror and glass, jittered 2x2", std::move(scene),
+      CameraSpec::squareView(Point(0, 14, 5), Point(0, 0, 1.5), 10, 14, 24),
+      std::make_unique<JitteredSampler>(2, 1, 13));
+}
+
 struct PoolShape {
   int threads, tileSize;
 };
@@ -135,6 +183,7 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
                                "galaxy, beams, soft spots, adaptive, lens"));
   scenes.push_back(softShadowScene());
   scenes.push_back(mirrorScene());
+  scenes.push_back(teapotScene());
   for (const SampledScene& s : scenes) {
     SCOPED_TRACE(s.name);
     const int nX = s.camera.nX(), nY = s.camera.nY();
@@ -170,6 +219,12 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
         renderImage({s.camera, *s.gridded, *s.sampler}, pooledGrid, {.threads = 3, .tileSize = 7});
     EXPECT_EQ(firstDifference(linear, pooledGrid), "");
     EXPECT_EQ(r.pixels, all.pixels());
+    // TC03: through the CBR, serial and on 2 threads: the linear scan's image
+    Image serialCbr(nX, nY), pooledCbr(nX, nY);
+    renderBlock({s.camera, *s.boxed, *s.sampler}, all, serialCbr);
+    EXPECT_EQ(firstDifference(linear, serialCbr), "");
+    renderImage({s.camera, *s.boxed, *s.sampler}, pooledCbr, {.threads = 2, .tileSize = 5});
+    EXPECT_EQ(firstDifference(linear, pooledCbr), "");
   }
 }
 

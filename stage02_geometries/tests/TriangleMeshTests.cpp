@@ -235,6 +235,58 @@ TEST(TriangleMeshTests, shadingNormal) {
   EXPECT_TRUE(sameBits(opposite.shadingNormal(1, 0.5, 0), opposite.flatNormal(1)));
 }
 
+TEST(TriangleMeshTests, normalAt) {
+  const Double3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+  const TriangleMesh flat(tetraVertices(), tetraTriangles());
+  const TriangleMesh smooth(tetraVertices(), tetraTriangles(), {z, x, y, z});
+  // Triangle 3 is (1,2,3): corners (1,0,0), (0,1,0), (0,0,1) with normals x, y, z.
+  const Point v1(1, 0, 0), v2(0, 1, 0), v3(0, 0, 1);
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: without vertex normals it is the flat normal, bit for bit, inside the triangle and at
+  // a corner
+  EXPECT_TRUE(sameBits(flat.normalAt(3, Point(0.2, 0.3, 0.5)), flat.flatNormal(3)));
+  EXPECT_TRUE(sameBits(flat.normalAt(0, Point(0, 0, 0)), flat.flatNormal(0)));
+  // TC02: at each corner the barycentric coordinates are exactly (0,0), (1,0), (0,1) (the
+  // sub-triangle's cross product is 0 or n itself), so the normal is that vertex's, exactly
+  EXPECT_TRUE(sameBits(smooth.normalAt(3, v1), smooth.normals()[1]));
+  EXPECT_TRUE(sameBits(smooth.normalAt(3, v2), smooth.normals()[2]));
+  EXPECT_TRUE(sameBits(smooth.normalAt(3, v3), smooth.normals()[3]));
+  // TC03: at the centroid the three normals blend equally: (1,1,1)/sqrt(3), unit length
+  const double k = 1 / std::sqrt(3.0);
+  const Vector centre = smooth.normalAt(3, Point(1.0 / 3, 1.0 / 3, 1.0 / 3));
+  expectVector(centre, k, k, k, 1e-15);
+  EXPECT_NEAR(centre.length(), 1.0, 1e-15);
+  // TC04: on an edge, the midpoint of v1 v2: only their normals blend, (1,1,0)/sqrt(2); a point
+  // a quarter of the way from v2 to v3: normalize(0.75·y + 0.25·z) = (0,3,1)/sqrt(10)
+  const Vector edge = smooth.normalAt(3, Point(0.5, 0.5, 0));
+  expectVector(edge, std::sqrt(0.5), std::sqrt(0.5), 0, 1e-15);
+  EXPECT_EQ(edge.z(), 0.0);
+  expectVector(smooth.normalAt(3, Point(0, 0.75, 0.25)), 0, 3 / std::sqrt(10.0),
+               1 / std::sqrt(10.0), 1e-15);
+  // TC05: a triangle in general position: the point (1 - b1 - b2)·v0 + b1·v1 + b2·v2 gets the
+  // normal shadingNormal gives for (b1, b2), to rounding
+  const std::vector<Point> v = {Point(0.1, -2.3, 4.7), Point(3.3, 0.25, -1.9),
+                                Point(-0.7, 1.1, 0.3)};
+  const TriangleMesh general(v, {{0, 1, 2}}, {{0.3, -1, 0.2}, {1, 0.5, 0.5}, {-0.2, 0.1, 1}});
+  const double b1 = 0.3, b2 = 0.45;
+  const Point p(v[0].xyz() * (1 - b1 - b2) + v[1].xyz() * b1 + v[2].xyz() * b2);
+  const Vector expected = general.shadingNormal(0, b1, b2);
+  expectVector(general.normalAt(0, p), expected.x(), expected.y(), expected.z(), 1e-14);
+  // TC06: a hit point a little off the plane (rounding) is read as its projection on the plane:
+  // the same normal to rounding
+  const Point off(p.xyz() + general.flatNormal(0).xyz() * 1e-9);
+  expectVector(general.normalAt(0, off), expected.x(), expected.y(), expected.z(), 1e-14);
+  // =============== Boundary Values Tests ==================
+  // TC11: opposite vertex normals blend to the exact zero vector at the middle of their edge:
+  // the flat normal. Triangle 1 is (0,1,3): normals z and -z at (0,0,0) and (1,0,0)
+  const TriangleMesh opposite(tetraVertices(), tetraTriangles(), {z, -z, y, z});
+  EXPECT_TRUE(sameBits(opposite.normalAt(1, Point(0.5, 0, 0)), opposite.flatNormal(1)));
+  // TC12: a vertex normal pointing away from the flat normal is kept, not flipped: triangle 0,
+  // (0,2,1), faces -z, but its smooth normal at (0,0,0) is the given +z
+  EXPECT_TRUE(sameBits(smooth.normalAt(0, Point(0, 0, 0)), smooth.normals()[0]));
+  EXPECT_EQ(smooth.flatNormal(0).z(), -1.0);
+}
+
 TEST(TriangleMeshTests, memoryBytes) {
   // TC01: at least the arrays' bytes; exactly them for arrays built to size (4 vertices with
   // normals, 4 triangles: 4·48 + 4·12 = 240)

@@ -9,4 +9,5 @@ set(STAGE_TESTS
     tests/CylinderIntersectionTests.cpp
     tests/GeometriesTests.cpp
     tests/HitRulesTests.cpp
-    tests/PropertyTests.cpp)
+    tests/PropertyTests.cpp
+    tests/MeshIntersectionTests.cpp)

@@ -504,36 +504,101 @@ TEST(ProbeTests, probeJsonListsSortedHitsAndTheUnclampedColor) {
             "}\n");
 }
 
-TEST(ProbeTests, aMeshTriangleIsAHitWithTheMeshsNormal) {
-  // TC01: a triangle of a mesh in front of probeScene's sphere and plane: a hit numbered after
-  // the two shapes, with the mesh's normal there (flat: the triangle's own, +z, whichever side
-  // the ray comes from), and the colour of the mesh's row (emission (0,0,50) + Ia·kA)
-  SceneDocument doc = probeScene();
+/// probeScene's plane z = 9 (shape 0) with two meshes in front of it and a shape added after
+/// them: mesh 0 ("pot", flat), two triangles of the square [-4,4]^2 in z = 3, split along its
+/// diagonal; mesh 1 (no name, smooth), one triangle in z = 6 with corners (-3,-1.5), (5,-1.5),
+/// (-3,6.5) and normals (0,0,1), (1,0,0), (1,0,0); a sphere far away (shape 1). The primitives:
+/// shapes 0 and 1, mesh 0's triangles 2 and 3, mesh 1's triangle 4.
+SceneDocument probeMeshScene() {
+  SceneDocument doc = litDocument(LitScene{}, CameraSpec{});
   LitScene& scene = litScene(doc);
+  scene.ambientLight = AmbientLight(Color(100, 100, 100), 0.5);
+  scene.add(Plane(Point(0, 0, 9), Vector(0, 0, -1)));
+  scene.addMesh(
+      std::make_shared<const TriangleMesh>(
+          std::vector<Point>{Point(-4, -4, 3), Point(4, -4, 3), Point(4, 4, 3), Point(-4, 4, 3)},
+          std::vector<TriangleMesh::Indices>{{0, 1, 2}, {0, 2, 3}}),
+      scene.addAppearance(Color(300, 20, 20)));
   scene.addMesh(std::make_shared<const TriangleMesh>(
-                    std::vector<Point>{Point(-3, -2, 1), Point(3, -2, 1), Point(0, 4, 1)},
-                    std::vector<TriangleMesh::Indices>{{0, 1, 2}}),
-                scene.addAppearance(Color(0, 0, 50)));
-  const PhongTracer tracer(scene);
+                    std::vector<Point>{Point(-3, -1.5, 6), Point(5, -1.5, 6), Point(-3, 6.5, 6)},
+                    std::vector<TriangleMesh::Indices>{{0, 1, 2}},
+                    std::vector<Double3>{{0, 0, 1}, {1, 0, 0}, {1, 0, 0}}),
+                0);
+  scene.add(Sphere(Point(100, 100, 100), 1));
+  doc.geometryNames = {{0, "back"}};
+  doc.meshNames = {{0, "pot"}};
+  return doc;
+}
+
+TEST(ProbeTests, probeJsonNamesMeshTriangles) {
+  const SceneDocument doc = probeMeshScene();
+  const PhongTracer tracer(litScene(doc));
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the ray (-1,0.5,-2) + t(0,0,1) meets mesh 0's triangle 1 (primitive 3) at t = 5, its
+  // flat normal (0,0,1), named by its mesh; mesh 1's triangle 0 (primitive 4, no name) at t = 8,
+  // where its barycentric coordinates are (0.25, 0.25): the normal 0.5·(0,0,1) + 0.5·(1,0,0),
+  // normalised; then the plane, a shape, as before. The colour is mesh 0's look: (300,20,20) +
+  // Ia·kA = (350,70,70). A mesh triangle's hit, longer than 100 columns, has a member per line
   EXPECT_EQ(probeJsonOf(doc, Ray(Point(-1, 0.5, -2), Vector(0, 0, 1)), tracer),
             "{\n"
             "  \"ray\": {\"origin\": [-1, 0.5, -2], \"direction\": [0, 0, 1]},\n"
             "  \"hits\": [\n"
-            "    {\"t\": 3, \"point\": [-1, 0.5, 1], \"normal\": [0, 0, 1], \"geometry\": 2, "
-            "\"name\": null},\n"
-            "    {\"t\": 5, \"point\": [-1, 0.5, 3], \"normal\": [0, 0, -1], \"geometry\": 0, "
-            "\"name\": \"ball \\\"A\\\"\"},\n"
-            "    {\"t\": 9, \"point\": [-1, 0.5, 7], \"normal\": [0, 0, 1], \"geometry\": 0, "
-            "\"name\": \"ball \\\"A\\\"\"},\n"
-            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 1, "
-            "\"name\": null}\n"
+            "    {\n"
+            "      \"t\": 5,\n"
+            "      \"point\": [-1, 0.5, 3],\n"
+            "      \"normal\": [0, 0, 1],\n"
+            "      \"geometry\": 3,\n"
+            "      \"mesh\": 0,\n"
+            "      \"triangle\": 1,\n"
+            "      \"name\": \"pot\"\n"
+            "    },\n"
+            "    {\n"
+            "      \"t\": 8,\n"
+            "      \"point\": [-1, 0.5, 6],\n"
+            "      \"normal\": [0.7071067811865475, 0, 0.7071067811865475],\n"
+            "      \"geometry\": 4,\n"
+            "      \"mesh\": 1,\n"
+            "      \"triangle\": 0,\n"
+            "      \"name\": null\n"
+            "    },\n"
+            "    {\"t\": 11, \"point\": [-1, 0.5, 9], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"back\"}\n"
             "  ],\n"
-            "  \"color\": [50, 50, 100]\n"
+            "  \"color\": [350, 70, 70]\n"
             "}\n");
-  // TC02: rt probe of a pixel of the teapot (a mesh alone): its hits, front and back
+  // =============== Boundary Values Tests ==================
+  // TC11: mesh 0's triangle 0 (below the diagonal), the first mesh triangle: primitive 2
+  EXPECT_EQ(probeJsonOf(doc, Ray(Point(3, -3, 0), Vector(0, 0, 1)), tracer),
+            "{\n"
+            "  \"ray\": {\"origin\": [3, -3, 0], \"direction\": [0, 0, 1]},\n"
+            "  \"hits\": [\n"
+            "    {\n"
+            "      \"t\": 3,\n"
+            "      \"point\": [3, -3, 3],\n"
+            "      \"normal\": [0, 0, 1],\n"
+            "      \"geometry\": 2,\n"
+            "      \"mesh\": 0,\n"
+            "      \"triangle\": 0,\n"
+            "      \"name\": \"pot\"\n"
+            "    },\n"
+            "    {\"t\": 9, \"point\": [3, -3, 9], \"normal\": [0, 0, -1], \"geometry\": 0, "
+            "\"name\": \"back\"}\n"
+            "  ],\n"
+            "  \"color\": [350, 70, 70]\n"
+            "}\n");
+}
+
+TEST(ProbeTests, probeOfTheTeapotNamesItsTriangles) {
+  // TC01: rt probe of the teapot's middle pixel (a mesh alone, built in code): the ray enters
+  // and leaves the pot's body, through triangles 214 (front) and 177 (back) of mesh 0, numbered
+  // as the primitives are (no shapes before them)
   const Outcome r = run({"probe", "teapot", "--pixel", "400,400"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"geometry\": "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"geometry\": 214,\n      \"mesh\": 0,\n      \"triangle\": 214,"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"geometry\": 177,\n      \"mesh\": 0,\n      \"triangle\": 177,"),
+            std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\"mesh\": 1"), std::string::npos) << r.out;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,7 +10,8 @@
 #include "cli/Tracers.h"
 #include "cli/Values.h"
 #include "common/JsonText.h"
-#include "geometries/Geometry.h"
+#include "intersections/Geometries.h"
+#include "intersections/Primitives.h"
 
 namespace rt::cli {
 
@@ -62,16 +63,27 @@ int probe(const ProbeArgs& args, const Io& io) {
 
 std::string probeJson(const SceneDocument& doc, const Ray& ray, const Color& color) {
   using Json = nlohmann::ordered_json;
-  const Geometries& shapes = doc.scene->geometries;
+  const Geometries& geometries = doc.scene->geometries;
+  const Primitives primitives = geometries.primitives();
   Json hits = Json::array();
-  for (const GeoPoint& h : shapes.findGeoIntersections(ray)) {
-    const std::string* name = doc.geometryName(h.geometry);
-    hits.push_back({{"t", jsonNumber(h.t)},
-                    {"point", jsonTriple(h.point.xyz())},
-                    // a primitive's normal: a shape's, or a mesh triangle's (numbered after them)
-                    {"normal", jsonTriple(shapes.normalAt(h.geometry, h.point).xyz())},
-                    {"geometry", h.geometry},
-                    {"name", name ? Json(*name) : Json(nullptr)}});
+  for (const GeoPoint& h : geometries.findGeoIntersections(ray)) {
+    Json hit = {{"t", jsonNumber(h.t)},
+                {"point", jsonTriple(h.point.xyz())},
+                {"normal", jsonTriple(geometries.normalAt(h.geometry, h.point).xyz())},
+                {"geometry", h.geometry}};
+    const std::string* name = nullptr;
+    if (primitives.isShape(h.geometry)) {
+      name = doc.geometryName(h.geometry);
+    } else {
+      // A mesh triangle: which mesh, and which of its triangles (the mesh's own numbering, as
+      // its file or its vertices and triangles list them, less the dropped ones).
+      const MeshTriangle m = primitives.meshTriangle(h.geometry);
+      hit["mesh"] = m.mesh;
+      hit["triangle"] = m.triangle;
+      name = doc.meshName(m.mesh);
+    }
+    hit["name"] = name ? Json(*name) : Json(nullptr);
+    hits.push_back(std::move(hit));
   }
   const Json answer = {{"ray",
                         {{"origin", jsonTriple(ray.head().xyz())},
@@ -94,10 +106,12 @@ void addProbeCommand(CommandLine& rt) {
       "             \"name\": NAME or null}, ..],\n"
       "   \"color\": [r, g, b]}\n"
       "hits: every intersection with t > 0, nearest first (the course's\n"
-      "findGeoIntersections); normal: the shape's outward unit normal at the point;\n"
-      "geometry: the shape's index in the scene (a mesh's triangles are numbered after the\n"
-      "shapes); color: what the tracer returns for the\n"
-      "ray, unclamped, on the 0-255 scale.\n",
+      "findGeoIntersections); normal: the shape's outward unit normal at the point (a\n"
+      "mesh's shading normal, interpolated when it is smooth); geometry: the shape's\n"
+      "index in the scene, or for a triangle of a mesh the number of shapes plus its\n"
+      "number among the meshes' triangles, with \"mesh\": M, \"triangle\": T before the\n"
+      "name (the mesh's); color: what the tracer returns for the ray, unclamped, on the\n"
+      "0-255 scale.\n",
       probe);
   // The values are checked by probe(): a pixel's range depends on the scene's resolution.
   addOptional(*command, "--ray", args->ray, "the ray's origin and direction", "OX,OY,OZ DX,DY,DZ");
