@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "InProcess.h"
+#include "cli/BuiltinScenes.h"
 #include "cli/CommandLine.h"
 #include "cli/Registry.h"
 #include "cli/RenderRequest.h"
@@ -114,6 +115,19 @@ TEST(RenderRequestTests, collectsTheWarningsWithoutPrinting) {
   // TC02: not rendering (probe): no warning about the render
   EXPECT_EQ(std::vector<std::string>{},
             resolveRenderRequest(dark, {.makesImage = false, .renders = false}).warnings);
+}
+
+TEST(RenderRequestTests, warnsOfABlackMeshToo) {
+  // TC01: the teapot (a mesh and no shape) has no ambient light: by the ambient tracer, the
+  // same warning as for shapes
+  if (findBuiltinScene("teapot") == nullptr) GTEST_SKIP() << "the teapot is mini2_bvh's";
+  SceneArguments pot;
+  pot.argument = "teapot";
+  pot.tracer = "ambient";
+  const RenderRequest r = resolveRenderRequest(pot, {});
+  ASSERT_EQ(1u, r.warnings.size());
+  EXPECT_TRUE(r.warnings[0].starts_with("warning: the ambient tracer (--tracer ambient)"))
+      << r.warnings[0];
 }
 
 TEST(RenderRequestTests, buildsTheRenderContext) {

@@ -81,7 +81,7 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
   }
   if (bounded.empty()) return;
   if (bounded.back() >= MAX_SHAPES)
-    throw std::length_error("Grid: bounded shape " + std::to_string(bounded.back()) +
+    throw std::length_error("Grid: bounded primitive " + std::to_string(bounded.back()) +
                             " of the scene's " + std::to_string(primitives.size()) +
                             ": an entry holds indices below " + std::to_string(MAX_SHAPES));
 
