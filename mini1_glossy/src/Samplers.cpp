@@ -36,11 +36,15 @@ Color JitteredSampler::pixelColor(const Camera& camera, const RayTracer& tracer,
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
       const auto cell = static_cast<std::uint32_t>((j * n + i) * lensCount);
-      // One shift of the lens lattice per cell, from the cell's first sample's stream.
-      const RandomStream cellStream(seed(), static_cast<std::uint32_t>(x),
-                                    static_cast<std::uint32_t>(y), cell);
-      const Sample2 shift{cellStream.uniform(LENS_SHIFT_DIMENSION),
-                          cellStream.uniform(LENS_SHIFT_DIMENSION + 1)};
+      // One shift of the lens lattice per cell, from the cell's first sample's stream (drawn
+      // only when there is a lens to sample).
+      Sample2 shift{};
+      if (lens) {
+        const RandomStream cellStream(seed(), static_cast<std::uint32_t>(x),
+                                      static_cast<std::uint32_t>(y), cell);
+        shift = {cellStream.uniform(LENS_SHIFT_DIMENSION),
+                 cellStream.uniform(LENS_SHIFT_DIMENSION + 1)};
+      }
       for (int l = 0; l < lensCount; ++l) {
         SampleContext ctx = context(x, y, cell + static_cast<std::uint32_t>(l), counts);
         double px = x + 0.5, py = y + 0.5;
