@@ -263,5 +263,35 @@ TEST(TeapotTests, theBvhAndTheGridRenderTheSameBits) {
   EXPECT_FALSE(sameBits(smooth.none, renderThreeWays(teapotScene(), 24).none));
 }
 
+TEST(TeapotTests, aLargeFloorUnderTheTeapot) {
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: floor 10000: a second mesh of two triangles in the plane of the teapot's bottom,
+  // facing up, with a look of its own
+  const SceneSetup<LitScene> setup = teapotScene({.floor = 10000});
+  const Geometries& g = setup.scene.geometries;
+  ASSERT_EQ(g.meshes().size(), 2u);
+  EXPECT_EQ(g.triangleCount(), 992u + 2);
+  const TriangleMesh& floor = *g.meshes()[1].mesh;
+  EXPECT_EQ(floor.corners(0)[0], Point(-10000, -39.8754, -10000));
+  EXPECT_EQ(floor.corners(1)[2], Point(10000, -39.8754, -10000));
+  EXPECT_EQ(floor.flatNormal(0), Vector(0, 1, 0));
+  EXPECT_EQ(floor.flatNormal(1), Vector(0, 1, 0));
+  EXPECT_NE(setup.scene.rowOf(0), setup.scene.rowOf(992));  // the teapot's, the floor's
+  EXPECT_EQ(setup.scene.rowOf(992), setup.scene.rowOf(993));
+  // TC02: the BVH's and the grid's images are the list's; the bottom row sees the floor (its
+  // emission (20,20,20) at least), the top row the black background
+  const ThreeImages t = renderThreeWays(setup, 24);
+  EXPECT_TRUE(sameBits(t.bvh, t.none));
+  EXPECT_TRUE(sameBits(t.grid, t.none));
+  EXPECT_GE(t.none.pixel(0, 23).rgb().x, 20);
+  EXPECT_EQ(t.none.pixel(0, 0), Color::BLACK);
+  // =============== Boundary Values Tests ==================
+  // TC11: floor 0: no floor, the course's scene
+  EXPECT_EQ(teapotScene({.floor = 0}).scene.geometries.meshes().size(), 1u);
+  // TC12: a negative floor is refused, naming it
+  EXPECT_THAT([] { teapotScene({.floor = -1}); },
+              ThrowsMessage<std::invalid_argument>(HasSubstr("floor")));
+}
+
 }  // namespace
 }  // namespace rt

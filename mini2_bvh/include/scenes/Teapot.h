@@ -38,6 +38,12 @@ namespace rt {
 struct TeapotOptions {
   int detail = 4;       ///< quads per patch side, 1..kUtahTeapotMaxDetail; 4: the course's 992
   bool smooth = false;  ///< the patches' normals (smooth shading); false: flat, as the course's
+  /// Not the course's: half the side of a square floor under the teapot, in the plane of its
+  /// bottom (y = -39.8754), centred below the origin; 0: none. Two triangles (a second mesh),
+  /// grey and matte, that catch the teapot's shadow. A floor far larger than the teapot is where
+  /// the regular grid loses to the BVH (the grid's cells are sized to the floor, and the whole
+  /// teapot falls into a few of them: mini2's README).
+  double floor = 0;
 };
 
 /// The bubbles of the later year's TeapotTest.
@@ -64,7 +70,8 @@ struct BubbleOptions {
 std::shared_ptr<const TriangleMesh> teapotMesh(const TeapotOptions& options = {});
 
 /// The course's TeapotTest of 2024: the teapot and its light, 800 x 800.
-/// @throws std::invalid_argument naming the detail when it is outside 1..kUtahTeapotMaxDetail.
+/// @throws std::invalid_argument naming the detail when it is outside 1..kUtahTeapotMaxDetail,
+///         or the floor when it is negative or not finite.
 SceneSetup<LitScene> teapotScene(const TeapotOptions& options = {});
 
 /// The later year's TeapotTest: the teapot, its light and bubbles.count bubbles, 1000 x 1000.

@@ -29,12 +29,16 @@ std::vector<SceneParam> teapotParams() {
        "quads per Bezier patch side, 1.." + std::to_string(kUtahTeapotMaxDetail) +
            ": 64*d^2 - 8*d triangles (4: the course's 992; 125: about 10^6)"},
       {"smooth", "off", "the patches' own normals (on) or flat triangles as the course's (off)"},
-      {"grid", "0", "the course's yellow grid lines every N pixels (the course's: 50; 0: none)"}};
+      {"grid", "0", "the course's yellow grid lines every N pixels (the course's: 50; 0: none)"},
+      {"floor", "0",
+       "not the course's: a square grey floor under the teapot, 2*N wide (two triangles; "
+       "10000: where the grid loses to the BVH); 0: none"}};
 }
 
 TeapotOptions teapotOptions(const SceneParams& p) {
   return {.detail = parseInt(p.at("detail"), "--param detail", 1, kUtahTeapotMaxDetail),
-          .smooth = parseOnOff(p.at("smooth"), "smooth")};
+          .smooth = parseOnOff(p.at("smooth"), "smooth"),
+          .floor = parseDouble(p.at("floor"), "--param floor")};
 }
 
 /// The scene as a document rendered by the course's tracer of the time (stage 7's Whitted: the
