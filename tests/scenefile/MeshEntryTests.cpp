@@ -9,11 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
+#include "ModelFileFixture.h"
 #include "scenefile/LitDocument.h"
 #include "scenefile/MeshDocument.h"
 #include "scenefile/ModelFile.h"
@@ -181,28 +180,8 @@ TEST(MeshEntryTest, AShapeAfterAMeshIsWarnedAboutAtItsElement) {
 
 // ---- Model files ------------------------------------------------------------------------------
 
-class MeshFileTest : public ::testing::Test {
+class MeshFileTest : public testing::ModelFileFixture {
  protected:
-  void SetUp() override {
-    if (!modelFilesSupported())
-      GTEST_SKIP() << "reading model files needs Assimp: install libassimp-dev (scripts/deps.sh "
-                      "installs it)";
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("rt-mesh-tests-" + std::to_string(rd()));
-    fs::create_directories(dir_ / "models");
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!dir_.empty()) fs::remove_all(dir_, ec);
-  }
-
-  /// Writes text to dir/name and returns its path.
-  std::string write(const std::string& name, const std::string& text) const {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-
   /// The error that loading dir/scene.json with the geometries gives; "(no error)" when none.
   std::string loadError(const std::vector<std::string>& geometries) const {
     const std::string path = write("scene.json", sceneWith(geometries));
@@ -213,8 +192,6 @@ class MeshFileTest : public ::testing::Test {
     }
     return "(no error)";
   }
-
-  fs::path dir_;
 };
 
 const std::string kTwoGroups =

@@ -4,13 +4,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <random>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "ModelFileFixture.h"
 #include "SceneCompare.h"
 #include "geometries/UtahTeapot.h"
 #include "lighting/CourseScenes.h"
@@ -250,27 +250,7 @@ TEST(RoundTripTest, AnInlineMeshComesBackAsItWasRead) {
   EXPECT_NE(dump1.find("\"material\": \"glaze\""), std::string::npos);
 }
 
-class MeshFileRoundTripTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!modelFilesSupported())
-      GTEST_SKIP() << "reading model files needs Assimp: install libassimp-dev (scripts/deps.sh "
-                      "installs it)";
-    std::random_device rd;
-    dir_ = std::filesystem::temp_directory_path() / ("rt-mesh-round-" + std::to_string(rd()));
-    std::filesystem::create_directories(dir_ / "a" / "models");
-    std::filesystem::create_directories(dir_ / "b");
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!dir_.empty()) std::filesystem::remove_all(dir_, ec);
-  }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-    return (dir_ / name).string();
-  }
-  std::filesystem::path dir_;
-};
+using MeshFileRoundTripTest = testing::ModelFileFixture;
 
 TEST_F(MeshFileRoundTripTest, AModelFilesEntryIsWrittenAgainWithItsPathMoved) {
   write("a/models/two.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
