@@ -44,7 +44,8 @@ struct SceneError : std::runtime_error {
                             const std::string& detail);
 };
 
-/// Reads a scene from JSON text. sourceName is what the messages call the file.
+/// Reads a scene from JSON text. sourceName is what the messages call the file; its folder is
+/// where a model file's relative path starts (a mesh's "file"; none: the current directory).
 /// @throws SceneError for malformed JSON or anything the format or a constructor rejects.
 SceneDocument parseScene(std::string_view text, const std::string& sourceName);
 
