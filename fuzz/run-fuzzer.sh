@@ -7,8 +7,9 @@
 # compile jobs, default 2), FUZZ_TARGET (scene_fuzzer, the default, or model_fuzzer: the model
 # reader on the model files of fuzz/models/, with a corpus of its own).
 #
-# The corpus starts from the repository's scene files (scenes/*.json, tests/scenefile/data/*.json
-# and fuzz/regressions/*) and grows in FUZZ_BUILD_DIR/corpus between runs. Exit status: 0 when
+# The corpus starts from the repository's scene files (scenes/*.json, tests/scenefile/data/*.json,
+# fuzz/scenes/*.json with what those lack, such as inline meshes, and fuzz/regressions/*) and
+# grows in FUZZ_BUILD_DIR/corpus between runs. Exit status: 0 when
 # the time ran out without a failure; 1 when libFuzzer found a crash, a sanitizer report, a leak
 # or a timeout (the input is saved under FUZZ_BUILD_DIR/artifacts/ and printed: make it a
 # regression test in tests/scenefile/FuzzRegressionTests.cpp and keep it in fuzz/regressions/).
@@ -48,7 +49,8 @@ corpus="$build/corpus"
 artifacts="$build/artifacts"
 extra=(-dict="$root/fuzz/scene.dict")
 shopt -s nullglob
-seeds=("$root"/scenes/*.json "$root"/tests/scenefile/data/*.json "$root"/fuzz/regressions/*)
+seeds=("$root"/scenes/*.json "$root"/tests/scenefile/data/*.json "$root"/fuzz/scenes/*.json
+       "$root"/fuzz/regressions/*)
 if [[ "$target" == model_fuzzer ]]; then
   corpus="$build/model-corpus"
   artifacts="$build/model-artifacts"

@@ -25,6 +25,7 @@
 #include "lighting/PhongTracer.h"
 #include "reflections/CourseScenes.h"
 #include "scenefile/LitDocument.h"
+#include "scenefile/ModelFile.h"
 #include "scenefile/SceneFile.h"
 #include "shadows/CourseScenes.h"
 
@@ -320,7 +321,8 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       // TC12: export of a name that is not a built-in scene
       {"TC12",
        {"export", "nebula"},
-       "rt: unknown scene 'nebula' (rt list shows the built-in scenes)\n"},
+       "rt: unknown scene 'nebula' (rt list shows the built-in scenes; a scene file ends in "
+       ".json)\n"},
       // TC13: export to a file that is not .json
       {"TC13",
        {"export", "two-color", "-o", "x.txt"},
@@ -604,6 +606,15 @@ TEST(ProbeTests, probeOfTheTeapotNamesItsTriangles) {
 // ---------------------------------------------------------------------------------------------
 // scenes/ and the output checks
 
+/// The scene files of dir that hand-written.txt lists (written by hand, not exported).
+std::set<std::string> handWrittenScenes(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  std::ifstream in(dir / "hand-written.txt");
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] != '#') names.insert(line);
+  return names;
+}
+
 TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
   namespace fs = std::filesystem;
   const fs::path dir = RT_SCENES_DIR;
@@ -618,11 +629,40 @@ TEST(ScenesFolderTests, everyBuiltinSceneIsExportedAndUpToDate) {
     EXPECT_EQ(test::readFile(file.string()), dumpScene(makeBuiltinScene(s, {})))
         << file << " is out of date; run: cmake --build BUILD --target export-scenes";
   }
-  // TC02: scenes/ holds no scene file that is not a built-in scene
+  // TC02: scenes/ holds no scene file that is not a built-in scene, but those written by hand
+  const std::set<std::string> handWritten = handWrittenScenes(dir);
   for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    if (e.path().extension() == ".json") {
+    if (e.path().extension() == ".json" && !handWritten.count(e.path().filename().string())) {
       EXPECT_NE(findBuiltinScene(e.path().stem().string()), nullptr)
-          << e.path() << " is no built-in scene; export-scenes removes it";
+          << e.path() << " is no built-in scene, nor listed in hand-written.txt; export-scenes "
+          << "removes it";
+    }
+  }
+}
+
+TEST(ScenesFolderTests, everySceneWrittenByHandLoads) {
+  namespace fs = std::filesystem;
+  const fs::path dir = RT_SCENES_DIR;
+  const std::set<std::string> handWritten = handWrittenScenes(dir);
+  // TC01: the list names the shading scene (a model file's mesh, smooth and flat)
+  EXPECT_EQ(handWritten.count("model-shading.json"), 1u);
+  for (const std::string& name : handWritten) {
+    SCOPED_TRACE(name);
+    // TC02: every file listed exists, is no built-in scene's export, and loads without warnings
+    // (its model files found beside it); without Assimp, a model file is refused saying so
+    const fs::path file = dir / name;
+    ASSERT_TRUE(fs::exists(file));
+    EXPECT_EQ(findBuiltinScene(file.stem().string()), nullptr);
+    if (modelFilesSupported()) {
+      EXPECT_EQ(loadScene(file.string()).warnings, std::vector<std::string>{});
+    } else {
+      try {
+        (void)loadScene(file.string());
+        ADD_FAILURE() << "loaded without Assimp";
+      } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("reading model files needs Assimp"), std::string::npos)
+            << e.what();
+      }
     }
   }
 }

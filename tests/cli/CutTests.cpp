@@ -183,6 +183,20 @@ TEST(CutTests, aKeyOfAMissingStageIsRefusedNamingIt) {
   ASSERT_NE(nullptr, tracerNamed(""));
   EXPECT_NE(std::string::npos, plain.err.find(", tracer " + tracerNamed("")->name + ","))
       << plain.err;
+  // TC04: a mesh geometry (mini 2: its triangles are the accelerations' primitives)
+  writeText(dir + "/mesh.json",
+            "{" + camera +
+                ",\n \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], "
+                "[0, 1, 0]], \"triangles\": [[0, 1, 2]]}]}");
+  const Outcome mesh = run({"render", dir + "/mesh.json", "-o", dir + "/mesh.png", "--silent"});
+  if (cliRegistry().makeAccelerator) {
+    EXPECT_EQ(0, mesh.code) << mesh.err;
+  } else {
+    EXPECT_EQ(2, mesh.code);
+    EXPECT_EQ("rt: " + dir + "/mesh.json:3:26: geometries[0].type: the geometry type 'mesh' " +
+                  "needs mini2_bvh, which this build does not include (a course cut before it)\n",
+              mesh.err);
+  }
   // TC11: a key no stage has is an unknown key in every cut
   writeText(dir + "/typo.json", "{" + camera + ",\n \"backgroud\": [0, 0, 0]}");
   const Outcome typo = run({"render", dir + "/typo.json", "-o", dir + "/t.png", "--silent"});

@@ -19,6 +19,7 @@
 #include "cli/BuiltinScenes.h"
 #include "lighting/CourseScenes.h"
 #include "reflections/CourseScenes.h"
+#include "scenefile/ModelFile.h"
 #include "shadows/CourseScenes.h"
 
 namespace rt::cli {
@@ -332,6 +333,96 @@ TEST(ExportProcessTests, renderingTheExportGivesTheSameBytes) {
     EXPECT_FALSE(builtinPng.empty());
     EXPECT_EQ(builtinPng, readFile(dir + "/" + name + "-export.png"));
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// meshes
+
+/// A scene file of an inline mesh (a square tile of two triangles with normals, turned and
+/// moved) and a sphere, lit.
+const std::string kInlineMeshScene = R"({
+  "camera": {"location": [0, 0, 10], "target": [0, 0, 0], "vpDistance": 10, "vpSize": [4, 4],
+             "resolution": [40, 40]},
+  "ambient": {"color": [255, 255, 255], "kA": 0.1},
+  "lights": [{"type": "point", "intensity": [400, 400, 400], "position": [3, 4, 8]}],
+  "geometries": [
+    {"type": "mesh", "vertices": [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]],
+     "triangles": [[0, 1, 2], [0, 2, 3]], "normals": [[-1, -1, 3], [1, -1, 3], [1, 1, 3], [-1, 1, 3]],
+     "rotation": [20, 30, 0], "translation": [0.3, 0, 0], "emission": [60, 10, 0],
+     "material": {"kD": 0.5, "kS": 0.5, "shininess": 30}},
+    {"type": "sphere", "center": [0, 0, -2], "radius": 1, "material": {"kD": 0.7}}
+  ]
+})";
+
+TEST(MeshProcessTests, aSceneFileWithMeshesRendersAsItsExport) {
+  const std::string dir = freshDirectory("meshExport");
+  std::filesystem::create_directories(dir + "/out");
+  std::vector<std::string> scenes{writeText(dir + "/inline.json", kInlineMeshScene)};
+  // The shading scene's model file, when this build reads model files (its path then moves)
+  if (modelFilesSupported()) scenes.push_back(std::string(RT_SCENES_DIR) + "/model-shading.json");
+  for (const std::string& scene : scenes) {
+    SCOPED_TRACE(scene);
+    const std::string name = std::filesystem::path(scene).stem().string();
+    const std::string exported = dir + "/out/" + name + ".json";
+    // TC01: the export into another folder renders to the same bytes as the scene file
+    test::RtResult r = runRt({"export", scene, "-o", exported});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::vector<std::string> size{"--width", "64", "--silent"};
+    std::vector<std::string> a{"render", scene, "-o", dir + "/" + name + "-file.png"};
+    std::vector<std::string> b{"render", exported, "-o", dir + "/" + name + "-export.png"};
+    a.insert(a.end(), size.begin(), size.end());
+    b.insert(b.end(), size.begin(), size.end());
+    ASSERT_EQ(runRt(a).exitCode, 0);
+    r = runRt(b);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string filePng = readFile(dir + "/" + name + "-file.png");
+    EXPECT_FALSE(filePng.empty());
+    EXPECT_EQ(filePng, readFile(dir + "/" + name + "-export.png"));
+  }
+  // TC02: the model file's path is relative to the export's folder
+  if (modelFilesSupported()) {
+    const std::string text = readFile(dir + "/out/model-shading.json");
+    const std::string expected =
+        std::filesystem::path(RT_SCENES_DIR "/models/teapot.ply")
+            .lexically_normal()
+            .lexically_relative(std::filesystem::absolute(dir + "/out").lexically_normal())
+            .generic_string();
+    EXPECT_NE(text.find("\"file\": \"" + expected + "\""), std::string::npos) << text;
+    EXPECT_EQ(expected.rfind("../", 0), 0u) << expected;
+  }
+}
+
+TEST(MeshProcessTests, aBadMeshExitsWithTwoAndKeepsTheImage) {
+  const std::string dir = freshDirectory("meshBad");
+  const std::string out = writeText(dir + "/out.png", "the previous image");
+  const std::string head =
+      "{\"camera\": {\"location\": [0, 0, 10], \"target\": [0, 0, 0], \"vpDistance\": 1, "
+      "\"vpSize\": [1, 1], \"resolution\": [8, 8]},\n \"geometries\": [\n";
+  // TC01: a model file that does not exist: the scene file, the entry, the model file named
+  const std::string missing =
+      writeText(dir + "/missing.json", head + "  {\"type\": \"mesh\", \"file\": \"none.obj\"}]}\n");
+  test::RtResult r = runRt({"render", missing, "-o", out});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_TRUE(
+      r.err.starts_with("rt: " + missing + ":3:28: geometries[0].file: " + dir + "/none.obj: "))
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(readFile(out), "the previous image");
+  // TC02: an inline mesh's index out of range
+  const std::string range = writeText(
+      dir + "/range.json", head +
+                               "  {\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, "
+                               "0]], \"triangles\": [[0, 1, 3]]}]}\n");
+  r = runRt({"render", range, "-o", out});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err, "rt: " + range +
+                       ":3:88: geometries[0].triangles[0][2]: expected a vertex index from 0 to 2 "
+                       "(the mesh has 3 vertices), got 3\n");
+  EXPECT_EQ(readFile(out), "the previous image");
+  // TC03: rt export refuses it too, and writes nothing
+  r = runRt({"export", missing, "-o", dir + "/x.json"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.json"));
 }
 
 }  // namespace

@@ -287,7 +287,7 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"box\"}]\n"
      "}\n",
      "bad.json:4:27: geometries[0].type: expected a geometry type (sphere, plane, triangle, "
-     "polygon, tube, cylinder), got \"box\""},
+     "polygon, tube, cylinder, mesh), got \"box\""},
     // EP30: misspelt geometry type
     {"UnknownGeometryTypeSuggested",
      "{\n"
@@ -296,7 +296,7 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"sphre\"}]\n"
      "}\n",
      "bad.json:4:27: geometries[0].type: expected a geometry type (sphere, plane, triangle, "
-     "polygon, tube, cylinder), got \"sphre\"; did you mean 'sphere'?"},
+     "polygon, tube, cylinder, mesh), got \"sphre\"; did you mean 'sphere'?"},
     // EP31: misspelt tracer
     {"UnknownTracer",
      "{\n"
@@ -462,7 +462,7 @@ const BadInput BAD_INPUTS[] = {
      "bad.json:1:73: "
      "name[0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]["
      "0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0][0]["
-     "0][0][0]: nesting deeper than 64 levels; a scene file needs at most 5"},
+     "0][0][0]: nesting deeper than 64 levels; a scene file needs at most 6"},
     // EP44: the column counts characters, not bytes
     {"Utf8Column",
      "{\"name\": \"h\xc3\xa9"
@@ -470,6 +470,220 @@ const BadInput BAD_INPUTS[] = {
      "\", \"x\": 1}",
      "bad.json:1:21: x: unknown key; expected one of: name, camera, views, background, ambient, "
      "lights, materials, geometries, render"},
+    // EP45: a mesh with both forms, a model file and inline arrays (at the second form's key)
+    {"MeshBothForms",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"vertices\": [[0, 0, 0], [1, "
+     "0, 0], [0, 1, 0]]}]\n"
+     "}\n",
+     "bad.json:4:52: geometries[0].vertices: give either 'file' or 'vertices' and "
+     "'triangles', not both"},
+    // EP46: a mesh with neither form
+    {"MeshNeitherForm",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"name\": \"m\"}]\n"
+     "}\n",
+     "bad.json:4:18: geometries[0]: missing required key 'file' (or give 'vertices' and "
+     "'triangles')"},
+    // EP47: an inline mesh without triangles
+    {"MeshWithoutTriangles",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]\n"
+     "}\n",
+     "bad.json:4:18: geometries[0]: missing required key 'triangles' (required with "
+     "'vertices')"},
+    // EP48: triangles without vertices (at the key)
+    {"MeshTrianglesWithoutVertices",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"triangles\": [[0, 1, 2]]}]\n"
+     "}\n",
+     "bad.json:4:35: geometries[0].triangles: 'triangles' index the mesh's 'vertices', which "
+     "are not given"},
+    // EP49: normals without vertices (at the key)
+    {"MeshNormalsWithoutVertices",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"normals\": [[0, 0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:52: geometries[0].normals: 'normals' are one per vertex of an inline mesh's "
+     "'vertices', which are not given"},
+    // BV07: a vertex index one past the last vertex
+    {"MeshIndexOutOfRange",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1, 3]]}]\n"
+     "}\n",
+     "bad.json:4:103: geometries[0].triangles[0][2]: expected a vertex index from 0 to 2 "
+     "(the mesh has 3 vertices), got 3"},
+    // BV08: a negative vertex index
+    {"MeshNegativeIndex",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[-1, 1, 2]]}]\n"
+     "}\n",
+     "bad.json:4:97: geometries[0].triangles[0][0]: expected a vertex index from 0 to 2 (the "
+     "mesh has 3 vertices), got -1"},
+    // EP50: an index that is not an integer
+    {"MeshFractionalIndex",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1.5, 2]]}]\n"
+     "}\n",
+     "bad.json:4:100: geometries[0].triangles[0][1]: expected a vertex index from 0 to 2 "
+     "(the mesh has 3 vertices), got 1.5"},
+    // BV09: an empty mesh: no vertices
+    {"MeshNoVertices",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [], \"triangles\": [[0, 1, 2]]}]\n"
+     "}\n",
+     "bad.json:4:47: geometries[0].vertices: expected an array of at least 3 points [x,y,z], "
+     "got []"},
+    // BV10: an empty mesh: no triangles
+    {"MeshNoTriangles",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": []}]\n"
+     "}\n",
+     "bad.json:4:95: geometries[0].triangles: expected an array of at least one triangle "
+     "[i,j,k] of vertex indices, got []"},
+    // EP51: a triangle of two indices
+    {"MeshTriangleOfTwo",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:96: geometries[0].triangles[0]: expected a triangle [i,j,k] of vertex "
+     "indices, got [0,1]"},
+    // EP52: fewer normals than vertices
+    {"MeshNormalsCount",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1, 2]], \"normals\": [[0, 0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:119: geometries[0].normals: expected an array of 3 normals [x,y,z], one per "
+     "vertex, got [[0,0,1]]"},
+    // EP53: a zero normal
+    {"MeshZeroNormal",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"normals\": [[0, 0, 1], [0, 0, 0], [0, 0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:105: geometries[0].normals[1]: expected a non-zero vector [x,y,z], got "
+     "[0,0,0]"},
+    // BV11: a scale of zero
+    {"MeshZeroScale",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"scale\": 0}]\n"
+     "}\n",
+     "bad.json:4:61: geometries[0].scale: expected a scale: a non-zero number or [x,y,z] of "
+     "non-zero numbers, got 0"},
+    // BV12: a scale of zero on one axis
+    {"MeshZeroScaleOnAnAxis",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"scale\": [1, 0, 1]}]\n"
+     "}\n",
+     "bad.json:4:61: geometries[0].scale: expected a scale: a non-zero number or [x,y,z] of "
+     "non-zero numbers, got [1,0,1]"},
+    // EP54: a rotation of two angles
+    {"MeshRotationOfTwo",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"rotation\": [90, 0]}]\n"
+     "}\n",
+     "bad.json:4:64: geometries[0].rotation: expected a rotation [x,y,z] in degrees, got "
+     "[90,0]"},
+    // EP55: coordinates that the scale makes infinite (at the entry)
+    {"MeshNotFiniteAfterScale",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1, 2]], \"scale\": 1e10}]\n"
+     "}\n",
+     "bad.json:4:18: geometries[0]: TriangleMesh: vertices[1] must be finite, got (inf,0,0)"},
+    // EP56: every triangle of zero area
+    {"MeshOnlyDegenerateTriangles",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [2, 0, 0]], "
+     "\"triangles\": [[0, 1, 2], [0, 0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:18: geometries[0]: TriangleMesh: every one of the 2 triangles has zero area "
+     "(none is left)"},
+    // EP57: an unknown shading
+    {"MeshUnknownShading",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"shading\": \"phong\"}]\n"
+     "}\n",
+     "bad.json:4:63: geometries[0].shading: expected a shading (smooth, flat), got \"phong\""},
+    // EP58: group materials for an inline mesh (at the key)
+    {"MeshMaterialsInline",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1, 2]], \"materials\": {}}]\n"
+     "}\n",
+     "bad.json:4:108: geometries[0].materials: 'materials' is for the material groups of a "
+     "model file; an inline mesh is one group: give it 'material'"},
+    // EP59: group materials that are not an object
+    {"MeshMaterialsNotAnObject",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"materials\": \"glass\"}]\n"
+     "}\n",
+     "bad.json:4:65: geometries[0].materials: expected an object of the model file's "
+     "material groups and their materials, got \"glass\""},
+    // EP60: an empty model file path
+    {"MeshEmptyFile",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"\"}]\n"
+     "}\n",
+     "bad.json:4:43: geometries[0].file: expected a model file's path, got \"\""},
+    // EP61: a misspelt key of a mesh
+    {"MeshMisspeltKey",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"normal\": [[0, 0, 1]]}]\n"
+     "}\n",
+     "bad.json:4:52: geometries[0].normal: unknown key; did you mean 'normals'?"},
 };
 
 // gtest prints a case by its name.

@@ -81,7 +81,10 @@ TEST(DefaultsTest, AmbientAndMaterial) {
   const SceneDocument kA = parse("\"ambient\": {\"color\": [255, 255, 255], \"kA\": 0.25}");
   EXPECT_TRUE(same(litScene(kA).ambientLight.kA(), Double3(0.25)));
   // EP03: an integral number is accepted where an integer is expected (shininess 1e2).
-  EXPECT_EQ(namedMaterials(parse("\"materials\": {\"m\": {\"shininess\": 1e2}}")).materials.at("m").shininess, 100);
+  EXPECT_EQ(namedMaterials(parse("\"materials\": {\"m\": {\"shininess\": 1e2}}"))
+                .materials.at("m")
+                .shininess,
+            100);
 }
 
 TEST(DefaultsTest, Geometry) {

@@ -64,8 +64,9 @@ TEST(FormatDocTest, EveryKeyIsDocumentedWithItsDefault) {
     const std::string stage = "| " + k.stage.substr(0, k.stage.find('_')) + " |";
     bool found = false;
     for (const std::string& row : rows)
-      found = found || (row.rfind("| `" + k.key + "` |", 0) == 0 &&
-                        row.find(stated) != std::string::npos && row.find(stage) != std::string::npos);
+      found =
+          found || (row.rfind("| `" + k.key + "` |", 0) == 0 &&
+                    row.find(stated) != std::string::npos && row.find(stage) != std::string::npos);
     EXPECT_TRUE(found) << "no row for `" << k.key << "` stating " << stated << " and " << stage;
   }
 }

@@ -7,12 +7,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <set>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "ModelFileFixture.h"
 #include "scenefile/ModelFile.h"
 
 namespace rt {
@@ -20,31 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class ModelFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (!modelFilesSupported())
-      GTEST_SKIP() << "reading model files needs Assimp: install libassimp-dev (scripts/deps.sh "
-                      "installs it)";
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() / ("rt-model-tests-" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!dir_.empty()) fs::remove_all(dir_, ec);
-  }
-
-  /// Writes bytes to dir/name and returns its path.
-  fs::path write(const std::string& name, const std::string& bytes) const {
-    const fs::path p = dir_ / name;
-    std::ofstream out(p, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    return p;
-  }
-
-  fs::path dir_;
-};
+using ModelFileTest = testing::ModelFileFixture;
 
 ModelOptions flat() {
   ModelOptions o;

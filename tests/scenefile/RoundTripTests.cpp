@@ -3,13 +3,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <memory>
 #include <random>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
+#include "ModelFileFixture.h"
 #include "SceneCompare.h"
+#include "geometries/UtahTeapot.h"
 #include "lighting/CourseScenes.h"
 #include "reflections/CourseScenes.h"
 #include "scenefile/LitDocument.h"
+#include "scenefile/ModelFile.h"
 #include "scenefile/SceneFile.h"
 #include "shadows/CourseScenes.h"
 
@@ -197,6 +204,124 @@ TEST(RoundTripTest, CameraGivenByDirection) {
   const std::string text = dumpScene(doc);
   EXPECT_NE(text.find("\"to\": [0, 0, -3]"), std::string::npos) << text;
   EXPECT_EQ(Fingerprint(parseScene(text, "dump")).str(), Fingerprint(doc).str());
+}
+
+// ---- Meshes ------------------------------------------------------------------------------------
+
+/// A mesh made in code, as a built-in scene makes one: the teapot at detail 2, turned by an
+/// angle that is no multiple of 90 degrees (so that its normals are no short decimals).
+std::shared_ptr<const TriangleMesh> turnedTeapot() {
+  const TriangleMesh teapot = utahTeapot(2);
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  std::vector<Point> vertices;
+  std::vector<Double3> normals;
+  for (const Point& p : teapot.vertices())
+    vertices.emplace_back(c * p.x() - s * p.y(), s * p.x() + c * p.y(), p.z() * 1.1);
+  for (const Vector& n : teapot.normals())
+    normals.emplace_back(c * n.x() - s * n.y(), s * n.x() + c * n.y(), n.z());
+  return std::make_shared<const TriangleMesh>(std::move(vertices), teapot.triangles(),
+                                              std::move(normals));
+}
+
+TEST(RoundTripTest, AMeshMadeInCodeIsWrittenInline) {
+  SceneDocument doc = baseDocument();
+  litScene(doc).add(Sphere(Point(0, 0, -1), 0.5));
+  const std::uint32_t row = litScene(doc).addAppearance(
+      Color(200, 0, 0),
+      Material{Double3(0.5), Double3(0.5), Double3(0), Double3(0), 60, 1, {}, {}});
+  litScene(doc).addMesh(turnedTeapot(), row);
+  const std::string dump1 = dumpScene(doc);
+  const SceneDocument back = parseScene(dump1, "dump");
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: every vertex, triangle and normal comes back with the same bits (a normal written as
+  // a vector whose normalisation is the stored one), and the look
+  ASSERT_EQ(litScene(back).geometries.meshes().size(), 1u);
+  EXPECT_EQ(Fingerprint(back).str(), Fingerprint(doc).str());
+  // TC02: the mesh follows the shapes, inline; writing it again gives the same text
+  EXPECT_NE(dump1.find("    {\n      \"type\": \"mesh\",\n      \"vertices\": [\n"),
+            std::string::npos);
+  EXPECT_EQ(dump1.find("\"file\""), std::string::npos);
+  EXPECT_EQ(dumpScene(back), dump1);
+}
+
+TEST(RoundTripTest, AnInlineMeshComesBackAsItWasRead) {
+  const std::string text =
+      R"({"camera": {"location": [0,0,10], "target": [0,0,0], "vpDistance": 1,
+          "vpSize": [1,1], "resolution": [4,4]}, "materials": {"glaze": {"kD": 0.5}},
+          "geometries": [
+          {"type": "mesh", "vertices": [[-0.0, 0, 0], [0.1, 0, 0], [0, 0.3, 0.7]],
+           "triangles": [[0, 1, 2]], "normals": [[1, 2, 3], [0, 0, 1], [0.1, 0.2, 0.3]],
+           "rotation": [10, 20, 30], "material": "glaze", "name": "shard"},
+          {"type": "mesh", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]],
+           "shading": "flat", "emission": [1, 2, 3]}]})";
+  const SceneDocument first = parseScene(text, "first.json");
+  const std::string dump1 = dumpScene(first);
+  const SceneDocument second = parseScene(dump1, "second.json");
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the placed vertices and the normals, the names and the named material, bit for bit
+  EXPECT_EQ(Fingerprint(second).str(), Fingerprint(first).str());
+  EXPECT_EQ(dumpScene(second), dump1);
+  // TC02: the transform is in the vertices now, not written again
+  EXPECT_EQ(dump1.find("\"rotation\""), std::string::npos);
+  EXPECT_NE(dump1.find("\"name\": \"shard\""), std::string::npos);
+  EXPECT_NE(dump1.find("\"material\": \"glaze\""), std::string::npos);
+}
+
+using MeshFileRoundTripTest = testing::ModelFileFixture;
+
+TEST_F(MeshFileRoundTripTest, AModelFilesEntryIsWrittenAgainWithItsPathMoved) {
+  write("a/models/two.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
+  write("a/models/two.obj",
+        "mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\n"
+        "usemtl red\nf 1 2 3\nusemtl blue\nf 1 2 4\nf 1 3 4 5\n");
+  const std::string scene =
+      write("a/scene.json",
+            R"({"camera": {"location": [0,0,10], "target": [0,0,0], "vpDistance": 1,
+          "vpSize": [1,1], "resolution": [4,4]}, "materials": {"glaze": {"kD": 0.5}},
+          "geometries": [
+          {"type": "mesh", "file": "models/two.obj", "scale": [1, 2, 3], "rotation": [0, 45, 0],
+           "translation": [0.1, 0, 0], "shading": "smooth", "materials": {"blue": "glaze"},
+           "emission": [5, 5, 5], "material": {"kR": 0.25}, "name": "pair"},
+          {"type": "mesh", "file": "models/two.obj", "shading": "flat",
+           "materials": {"red": {"kT": 0.5}, "blue": "glaze"}}]})");
+  const SceneDocument first = loadScene(scene);
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: written for a file in another folder, the path is relative to that folder; the
+  // transform, the shading and the groups' materials are kept, and the entry's own material
+  // only where a group uses it
+  const std::string dump = dumpScene(first, dir_ / "b");
+  const nlohmann::json j = nlohmann::json::parse(dump);
+  ASSERT_EQ(j["geometries"].size(), 2u);
+  const nlohmann::json& pair = j["geometries"][0];
+  EXPECT_EQ(pair["file"], "../a/models/two.obj");
+  EXPECT_EQ(pair["scale"], nlohmann::json::parse("[1, 2, 3]"));
+  EXPECT_EQ(pair["rotation"], nlohmann::json::parse("[0, 45, 0]"));
+  EXPECT_EQ(pair["translation"], nlohmann::json::parse("[0.1, 0, 0]"));
+  EXPECT_FALSE(pair.contains("shading"));
+  EXPECT_EQ(pair["materials"], nlohmann::json::parse(R"({"blue": "glaze"})"));
+  EXPECT_EQ(pair["material"], nlohmann::json::parse(R"({"kR": 0.25})"));
+  EXPECT_EQ(pair["name"], "pair");
+  const nlohmann::json& flat = j["geometries"][1];
+  EXPECT_EQ(flat["shading"], "flat");
+  EXPECT_EQ(flat["materials"], nlohmann::json::parse(R"({"red": {"kT": 0.5}, "blue": "glaze"})"));
+  EXPECT_FALSE(flat.contains("material"));
+  // TC02: read from there, the same meshes, bit for bit (the model read again)
+  const SceneDocument second = loadScene(write("b/scene.json", dump));
+  EXPECT_EQ(litScene(second).geometries.meshes().size(), 4u);
+  EXPECT_EQ(Fingerprint(second).str(), Fingerprint(first).str());
+  EXPECT_EQ(dumpScene(second, dir_ / "b"), dump);
+  // TC03: written for the scene's own folder, the path as the file gave it
+  EXPECT_NE(dumpScene(first, dir_ / "a").find("\"file\": \"models/two.obj\""), std::string::npos);
+  // =============== Boundary Values Tests ==================
+  // TC11: an absolute path is written as it was given, wherever the export goes
+  const std::string absolute = (dir_ / "a/models/two.obj").string();
+  const SceneDocument fixed = parseScene(
+      R"({"camera": {"location": [0,0,10], "target": [0,0,0], "vpDistance": 1,
+          "vpSize": [1,1], "resolution": [4,4]}, "geometries": [
+          {"type": "mesh", "file": ")" +
+          absolute + R"("}]})",
+      "anywhere.json");
+  EXPECT_NE(dumpScene(fixed, dir_ / "b").find("\"file\": \"" + absolute + "\""), std::string::npos);
 }
 
 TEST(ToJsonTest, RejectsDocumentsThatCannotBeWritten) {

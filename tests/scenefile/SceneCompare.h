@@ -1,7 +1,8 @@
 #pragma once
 // Bit-for-bit comparison of scene documents, for the round-trip tests: two documents are the
 // same when every number of the one has the same bits as the matching number of the other
-// (so 0 and -0 differ, and a normal moved by one ulp is caught).
+// (so 0 and -0 differ, and a normal moved by one ulp is caught), meshes' vertices, triangles
+// and normals included.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <variant>
 
 #include "scenefile/LitDocument.h"
+#include "scenefile/MeshDocument.h"
 #include "scenefile/SceneDocument.h"
 
 namespace rt::testing {
@@ -58,6 +60,15 @@ class Fingerprint {
       if (const std::string* name = d.geometryName(i)) label("name " + *name);
       if (const std::string* material = materialNameOf(d, i)) label("uses " + *material);
     }
+    for (std::uint32_t k = 0; k < litScene(d).geometries.meshes().size(); ++k) {
+      label("mesh " + std::to_string(k));
+      addMesh(*litScene(d).geometries.meshes()[k].mesh);
+      const std::uint32_t row = litScene(d).meshAppearance[k];
+      add(litScene(d).appearances[row].emission.rgb());
+      add(litScene(d).appearances[row].material);
+      if (const std::string* name = meshName(d, k)) label("name " + *name);
+      if (const std::string* material = materialNameOfRow(d, row)) label("uses " + *material);
+    }
   }
 
   const std::string& str() const { return text_; }
@@ -98,6 +109,15 @@ class Fingerprint {
     addLight(static_cast<const PointLight&>(l));
     add(l.direction.xyz());
     add(l.narrowBeam);
+  }
+  void addMesh(const TriangleMesh& m) {
+    label("vertices");
+    for (const Point& v : m.vertices()) add(v.xyz());
+    label("triangles");
+    for (const TriangleMesh::Indices& t : m.triangles())
+      for (std::uint32_t i : t) add(static_cast<int>(i));
+    label("normals");
+    for (const Vector& n : m.normals()) add(n.xyz());
   }
   void addShape(const Sphere& s) {
     label("sphere");

@@ -1,11 +1,12 @@
-// rt export NAME [-o FILE.json]
+// rt export SCENE [-o FILE.json]
+#include <filesystem>
 #include <optional>
 #include <ostream>
 #include <vector>
 
 #include "CommandRegistration.h"
 #include "camera/AtomicFile.h"
-#include "cli/BuiltinScenes.h"
+#include "cli/Commands.h"
 #include "scenefile/SceneFile.h"
 
 namespace rt::cli {
@@ -20,10 +21,13 @@ struct ExportArgs {
 };
 
 int exportScene(const ExportArgs& args, const Io& io) {
-  const BuiltinScene& scene = requireBuiltinScene(args.name, "rt list shows the built-in scenes");
   const std::optional<std::string>& output = args.output;
   if (output) checkOutputWritable(*output, SCENE_FILE);
-  const std::string text = dumpScene(makeBuiltinScene(scene, args.params));
+  // A model file's path is written relative to the written file's folder (standard output: the
+  // current directory's), so that the export finds the model where the scene file found it.
+  const std::filesystem::path folder =
+      output ? std::filesystem::path(*output).parent_path() : std::filesystem::path();
+  const std::string text = dumpScene(loadSceneArgument(args.name, args.params), folder);
   if (output)
     writeFileAtomically(*output, text);
   else
@@ -35,13 +39,14 @@ int exportScene(const ExportArgs& args, const Io& io) {
 
 void addExportCommand(CommandLine& rt) {
   const auto [command, args] = rt.addCommand(
-      "export", "write a built-in scene as a JSON scene file",
+      "export", "write a built-in scene (or a scene file, again) as a JSON scene file",
       "Rendering the exported file gives the same image, byte for byte, as rendering the\n"
-      "built-in scene (with the same --param values, for a scene that has parameters). The "
-      "repository keeps every built-in scene's export in scenes/\n"
+      "scene (with the same --param values, for a built-in scene that has parameters). A\n"
+      "scene file's model files keep their places: their paths are written relative to the\n"
+      "exported file's folder. The repository keeps every built-in scene's export in scenes/\n"
       "(cmake --build BUILD --target export-scenes refreshes them).\n",
       exportScene);
-  command->add_option("NAME", args->name, "a built-in scene's name");
+  command->add_option("SCENE", args->name, "a built-in scene's name, or a .json scene file");
   addParamOption(*command, args->params);
   addOptional(*command, "-o,--output", args->output, "where to write it (default: standard output)",
               "FILE.json");

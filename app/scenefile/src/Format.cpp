@@ -23,6 +23,21 @@ const SceneFormat& sceneFormat() {
   return format;
 }
 
+std::vector<AbsentKey> absentTypes(std::string_view object,
+                                   std::span<const std::string_view> present) {
+  std::vector<AbsentKey> absent;
+  const std::string prefix = std::string(object) + " ";
+  for (const CatalogueKey& k : keyCatalogue()) {
+    if (!k.object.starts_with(prefix)) continue;
+    const std::string_view type = k.object.substr(prefix.size());
+    const bool isPresent = std::find(present.begin(), present.end(), type) != present.end();
+    const bool isListed = std::any_of(absent.begin(), absent.end(),
+                                      [&](const AbsentKey& a) { return a.name == type; });
+    if (!isPresent && !isListed) absent.push_back({type, k.stage});
+  }
+  return absent;
+}
+
 void orderKeys(Json& j, std::initializer_list<std::string_view> objects) {
   if (!j.is_object()) return;
   std::vector<std::string_view> order{"type"};

@@ -6,7 +6,9 @@
 /// every stage (Catalogue.cpp). A cut of the course therefore reads exactly the keys of its
 /// stages, and names the stage a missing key needs.
 
+#include <any>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -67,9 +69,36 @@ struct GeometryFields {
   std::string name;
   /// What later stages read on a geometry (stage 5: its emission and material).
   std::any look;
+  /// What a geometry type of a later stage reads (mini 2: a mesh's keys).
+  std::any typeFields;
+};
+
+/// Makes a geometry of one type from its fields, once its keys are read (node: the whole object,
+/// for messages).
+using GeometryBuilder = std::function<void(const Node& node, GeometryFields& fields)>;
+
+/// A geometry type: its name and its builder. Its keys are the catalogue's "geometry TYPE" and
+/// those every geometry has ("geometry").
+struct GeometryType {
+  std::string_view type;
+  GeometryBuilder build;
+};
+
+/// Which element of the file's "geometries" made each shape, by shape index. An element that
+/// makes no shape (a mesh, whose triangles are not shapes) moves the shapes after it, so that
+/// shape i need not be element i; a message about a shape is put at its element. Kept in the
+/// reading context (Context::state).
+struct ShapeElements {
+  std::vector<std::uint32_t> elementOf;
 };
 
 using JsonWriter = std::function<void(const SceneDocument& doc, Json& object)>;
+
+/// A writer of geometries that are not shapes (mini 2: the meshes), which appends them to the
+/// document's "geometries" array. folder is that of the file being written (empty: the current
+/// directory), so that a model file's path is written relative to it.
+using MoreGeometriesWriter = std::function<void(
+    const SceneDocument& doc, const std::filesystem::path& folder, Json& geometries)>;
 
 class SceneFormat {
  public:
@@ -97,6 +126,13 @@ class SceneFormat {
     return t;
   }
 
+  /// Adds a geometry type (stage 4: the course's six shapes; mini 2: the mesh), in the course's
+  /// order: the order in which messages list them.
+  void addGeometryType(std::string_view type, GeometryBuilder build) {
+    geometryTypes_.push_back({type, std::move(build)});
+  }
+  const std::vector<GeometryType>& geometryTypes() const { return geometryTypes_; }
+
   /// Declares that this build has the tracer called name.
   void addTracer(std::string_view name) { tracers_.push_back(name); }
   /// The tracers this build has, in the course's order.
@@ -120,11 +156,20 @@ class SceneFormat {
   /// are put in the catalogue's order afterwards).
   std::vector<JsonWriter> writeDocument;
   std::vector<std::function<void(const SceneDocument&, std::uint32_t, Json&)>> writeGeometry;
+  /// Called after writeDocument, in stage order: the geometries after the shapes.
+  std::vector<MoreGeometriesWriter> writeMoreGeometries;
 
  private:
   std::map<std::pair<std::string, std::string>, std::any> readers_;
   std::vector<std::string_view> tracers_;
+  std::vector<GeometryType> geometryTypes_;
 };
+
+/// The types of a typed object (object "geometry": the catalogue's objects "geometry TYPE") that
+/// the catalogue has and present lacks, each with its stage (that of its first key): what a
+/// course cut names when a file uses one ("the geometry type 'mesh' needs mini2_bvh").
+std::vector<AbsentKey> absentTypes(std::string_view object,
+                                   std::span<const std::string_view> present);
 
 /// The format of this build, every present stage's part registered (on the first call).
 const SceneFormat& sceneFormat();

@@ -119,16 +119,23 @@ struct TypeRule {
 };
 
 /// Reads an object with a "type" key: picks the rule for its type ("expected a WHAT type
-/// (a, b, c)" otherwise), reads the rest of the object with that rule's table, and builds.
+/// (a, b, c)" otherwise; for a type of a stage this build does not have, "the WHAT type 'mesh'
+/// needs mini2_bvh, ..."), reads the rest of the object with that rule's table, and builds.
 template <typename Fields>
 void readTyped(const Node& node, const std::vector<TypeRule<Fields>>& rules, std::string_view what,
-               Fields fields = {}) {
+               std::span<const AbsentKey> absentTypes = {}) {
   if (!node.json().is_object()) node.expected("a " + std::string(what) + " object");
   if (!node.find("type")) node.fail("missing required key 'type'");
+  const Node typeNode = node.member("type");
+  if (typeNode.json().is_string())
+    for (const AbsentKey& a : absentTypes)
+      if (typeNode.json().get<std::string>() == a.name)
+        typeNode.fail(needsStageMessage(std::string(what) + " type", a.name, a.stage));
   std::vector<std::string_view> types;
   for (const TypeRule<Fields>& rule : rules) types.push_back(rule.type);
   const std::string type =
-      readChoice(node.member("type"), std::string("a ") + std::string(what) + " type", types);
+      readChoice(typeNode, std::string("a ") + std::string(what) + " type", types);
+  Fields fields{};
   for (const TypeRule<Fields>& rule : rules)
     if (rule.type == type) {
       readObject(node, *rule.keys, fields, what, {"type"});

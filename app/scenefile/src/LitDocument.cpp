@@ -28,10 +28,12 @@ const NamedMaterials& namedMaterials(const SceneDocument& doc) {
 }
 
 const std::string* materialNameOf(const SceneDocument& doc, std::uint32_t i) {
+  return materialNameOfRow(doc, litScene(doc).appearanceIndex[i]);
+}
+
+const std::string* materialNameOfRow(const SceneDocument& doc, std::uint32_t row) {
   const NamedMaterials* m = doc.findPart<NamedMaterials>();
-  if (!m) return nullptr;
-  const std::uint32_t row = litScene(doc).appearanceIndex[i];
-  if (row >= m->rowNames.size() || !m->rowNames[row]) return nullptr;
+  if (!m || row >= m->rowNames.size() || !m->rowNames[row]) return nullptr;
   return &*m->rowNames[row];
 }
 

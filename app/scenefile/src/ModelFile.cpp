@@ -7,14 +7,14 @@
 /// transforms and the caller's transform in double precision, joins the meshes of one material
 /// and hands the arrays to TriangleMesh, which validates them.
 #include <algorithm>
-#include <array>
 #include <cerrno>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <new>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -25,97 +25,23 @@
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
 
+#include "ModelTransform.h"
 #include "scenefile/ModelFile.h"
 
 namespace rt {
 
 namespace {
 
-/// A 3x3 matrix and a translation: p' = m·p + t. Rows of m.
-struct Affine {
-  std::array<Double3, 3> m{Double3(1, 0, 0), Double3(0, 1, 0), Double3(0, 0, 1)};
-  Double3 t{0, 0, 0};
+using scenefile::Affine;
+using scenefile::affineOf;
 
-  Double3 linear(const Double3& v) const {
-    return {m[0].x * v.x + m[0].y * v.y + m[0].z * v.z, m[1].x * v.x + m[1].y * v.y + m[1].z * v.z,
-            m[2].x * v.x + m[2].y * v.y + m[2].z * v.z};
+/// The caller's transform as a map; a degenerate one is refused naming the model file.
+Affine fromOptions(const ModelTransform& transform, const std::string& source) {
+  try {
+    return affineOf(transform);
+  } catch (const std::invalid_argument& e) {
+    throw ModelError(source, e.what());
   }
-  Double3 apply(const Double3& p) const { return linear(p) + t; }
-
-  /// this·o (o applied first).
-  Affine after(const Affine& o) const {
-    Affine r;
-    for (int i = 0; i < 3; ++i) {
-      const Double3& a = m[i];
-      r.m[i] = {a.x * o.m[0].x + a.y * o.m[1].x + a.z * o.m[2].x,
-                a.x * o.m[0].y + a.y * o.m[1].y + a.z * o.m[2].y,
-                a.x * o.m[0].z + a.y * o.m[1].z + a.z * o.m[2].z};
-    }
-    r.t = apply(o.t);
-    return r;
-  }
-
-  double determinant() const {
-    const Double3 &a = m[0], &b = m[1], &c = m[2];
-    return a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) +
-           a.z * (b.x * c.y - b.y * c.x);
-  }
-
-  /// The cofactor matrix times the sign of the determinant: the inverse transpose up to a
-  /// positive factor, which the normalisation of the normals removes (and no division).
-  Affine normalMatrix() const {
-    const Double3 &a = m[0], &b = m[1], &c = m[2];
-    Affine r;
-    r.m[0] = {b.y * c.z - b.z * c.y, b.z * c.x - b.x * c.z, b.x * c.y - b.y * c.x};
-    r.m[1] = {a.z * c.y - a.y * c.z, a.x * c.z - a.z * c.x, a.y * c.x - a.x * c.y};
-    r.m[2] = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    if (determinant() < 0)
-      for (Double3& row : r.m) row = -row;
-    return r;
-  }
-};
-
-/// Sine and cosine of an angle in degrees, exact at multiples of 90 degrees.
-std::pair<double, double> sinCosDegrees(double degrees) {
-  const double turn = std::fmod(degrees, 360.0);
-  const double quarter = turn / 90.0;
-  if (quarter == std::floor(quarter)) {
-    switch ((static_cast<int>(quarter) % 4 + 4) % 4) {
-      case 0:
-        return {0.0, 1.0};
-      case 1:
-        return {1.0, 0.0};
-      case 2:
-        return {0.0, -1.0};
-      default:
-        return {-1.0, 0.0};
-    }
-  }
-  const double radians = turn * (3.14159265358979323846 / 180.0);
-  return {std::sin(radians), std::cos(radians)};
-}
-
-Affine fromOptions(const ModelTransform& tr, const std::string& source) {
-  const auto refuse = [&](const std::string& what) {
-    throw ModelError(source, "the transform is degenerate: " + what);
-  };
-  if (!tr.scale.isFinite() || tr.scale.x == 0 || tr.scale.y == 0 || tr.scale.z == 0)
-    refuse("scale must be finite and non-zero on every axis, got " + tr.scale.str());
-  if (!tr.rotationDegrees.isFinite())
-    refuse("rotation must be finite, got " + tr.rotationDegrees.str());
-  if (!tr.translation.isFinite()) refuse("translation must be finite, got " + tr.translation.str());
-  Affine scale;
-  scale.m = {Double3(tr.scale.x, 0, 0), Double3(0, tr.scale.y, 0), Double3(0, 0, tr.scale.z)};
-  const auto [sx, cx] = sinCosDegrees(tr.rotationDegrees.x);
-  const auto [sy, cy] = sinCosDegrees(tr.rotationDegrees.y);
-  const auto [sz, cz] = sinCosDegrees(tr.rotationDegrees.z);
-  Affine rx, ry, rz;
-  rx.m = {Double3(1, 0, 0), Double3(0, cx, -sx), Double3(0, sx, cx)};
-  ry.m = {Double3(cy, 0, sy), Double3(0, 1, 0), Double3(-sy, 0, cy)};
-  rz.m = {Double3(cz, -sz, 0), Double3(sz, cz, 0), Double3(0, 0, 1)};
-  Affine r = rz.after(ry.after(rx.after(scale)));
-  r.t = tr.translation;
-  return r;
 }
 
 Affine fromAssimp(const aiMatrix4x4& a) {
@@ -224,17 +150,18 @@ ModelFile toModel(const aiScene* scene, const Assimp::Importer& importer, const 
         for (unsigned f = 0; f < mesh.mNumFaces && !hasTriangles; ++f)
           hasTriangles = mesh.mFaces[f].mNumIndices == 3;
         if (!hasTriangles) continue;
-        const Affine& place = g.transforms[k];
-        const Affine normalPlace = place.normalMatrix();
         const auto offset = static_cast<std::uint32_t>(vertices.size());
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
           const aiVector3D& p = mesh.mVertices[v];
-          vertices.emplace_back(place.apply(Double3(p.x, p.y, p.z)));
+          vertices.emplace_back(p.x, p.y, p.z);
           if (withNormals) {
             const aiVector3D& n = mesh.mNormals[v];
-            normals.push_back(normalPlace.linear(Double3(n.x, n.y, n.z)));
+            normals.emplace_back(n.x, n.y, n.z);
           }
         }
+        g.transforms[k].place(
+            std::span(vertices).subspan(offset),
+            withNormals ? std::span(normals).subspan(offset) : std::span<Double3>());
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
           const aiFace& face = mesh.mFaces[f];
           if (face.mNumIndices != 3) continue;
@@ -339,6 +266,9 @@ ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& o
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec))
     throw ModelError(source, "cannot read: it is a directory");
+  // A device or a pipe (/dev/zero, a FIFO) would be read forever or block.
+  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+    throw ModelError(source, "cannot read: it is not a regular file");
   std::FILE* f = std::fopen(source.c_str(), "rb");
   if (f == nullptr) throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
   std::string start(kPlyHeaderLimit, '\0');

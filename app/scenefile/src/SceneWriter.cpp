@@ -6,13 +6,14 @@
 
 namespace rt {
 
-nlohmann::ordered_json toJson(const SceneDocument& doc) {
+nlohmann::ordered_json toJson(const SceneDocument& doc, const std::filesystem::path& folder) {
   using scenefile::orderKeys;
   if (!doc.scene) throw std::logic_error("toJson: the document has no scene");
   const scenefile::SceneFormat& format = scenefile::sceneFormat();
   for (const auto& check : format.checkDocument) check(doc);
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const auto& write : format.writeDocument) write(doc, j);
+  for (const auto& write : format.writeMoreGeometries) write(doc, folder, j["geometries"]);
   orderKeys(j, {"document"});
   orderKeys(j["camera"], {"camera"});
   if (j.contains("views"))
@@ -21,6 +22,8 @@ nlohmann::ordered_json toJson(const SceneDocument& doc) {
   return j;
 }
 
-std::string dumpScene(const SceneDocument& doc) { return formatJson(toJson(doc)); }
+std::string dumpScene(const SceneDocument& doc, const std::filesystem::path& folder) {
+  return formatJson(toJson(doc, folder));
+}
 
 }  // namespace rt

@@ -145,7 +145,7 @@ class Recorder {
     if (frames_.size() >= static_cast<std::size_t>(MAX_DEPTH)) {
       problem_ = SyntaxProblem{tokenStart(), pathOfPending(),
                                "nesting deeper than " + std::to_string(MAX_DEPTH) +
-                                   " levels; a scene file needs at most 5"};
+                                   " levels; a scene file needs at most 6"};
       return false;
     }
     std::string segmentKey =

@@ -16,7 +16,8 @@
 ///
 /// The same pass enforces what the DOM would hide or what would cost too much: duplicate keys
 /// (the DOM silently keeps the last), non-finite numbers (reported with their path), and absurd
-/// nesting (the format is at most five levels deep; MAX_DEPTH stops a hostile file early).
+/// nesting (the format is at most six levels deep, a beam of the material of a model file's
+/// group; MAX_DEPTH stops a hostile file early).
 
 #include <cstddef>
 #include <cstdint>

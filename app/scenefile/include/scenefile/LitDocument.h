@@ -34,6 +34,9 @@ const NamedMaterials& namedMaterials(const SceneDocument& doc);
 
 /// The named material that geometry i uses, or nullptr when its material is inline.
 const std::string* materialNameOf(const SceneDocument& doc, std::uint32_t i);
+/// The named material that row `row` of the appearance table uses (the geometries and meshes of
+/// that row), or nullptr when its material is inline.
+const std::string* materialNameOfRow(const SceneDocument& doc, std::uint32_t row);
 
 /// A document for a lit scene (what a built-in scene of stage 5 or later is). Pass the scene with
 /// std::move when it is not needed again: a galaxy of 10^6 stars is 130 MB, not to be copied.

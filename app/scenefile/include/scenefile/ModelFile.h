@@ -72,9 +72,10 @@ struct ModelFile {
 
 /// Reads the model file at file.
 /// @throws ModelError, the message "FILE: ..." for: a file that is missing or unreadable (the
-///         system's reason), a directory, a file Assimp cannot parse or validate (its message,
-///         which names no line: an index out of range is "OBJ: vertex index out of range" or
-///         "Validation failed: aiMesh::mFaces[0]::mIndices[2] is out of range"), a PLY header
+///         system's reason), a directory, a device or a pipe (not a regular file), a file
+///         Assimp cannot parse or validate (its message, which names no line: an index out of
+///         range is "OBJ: vertex index out of range" or "Validation failed:
+///         aiMesh::mFaces[0]::mIndices[2] is out of range"), a PLY header
 ///         without an end_header line (on which Assimp would never return), a face without
 ///         indices, a model without triangles, a size TriangleMesh::requireFits refuses or that
 ///         memory cannot hold, non-finite coordinates (TriangleMesh's message), a degenerate
@@ -90,5 +91,13 @@ ModelFile readModelFromMemory(std::span<const std::byte> bytes, std::string_view
 
 /// Whether this build reads model files (it was built with Assimp).
 bool modelFilesSupported();
+
+/// The mesh as a binary (little-endian) PLY file, which readModelFile reads back: every vertex
+/// as three floats x, y, z (rounded from the mesh's doubles), every triangle as a list of three
+/// 32-bit indices, and no normals (a reader with smooth shading computes them). comment, one
+/// line, goes into the header (the file's origin). Needs no Assimp: how the project writes the
+/// model files it ships (scenes/models/).
+/// @throws std::invalid_argument for a comment with a line break.
+std::string binaryPly(const TriangleMesh& mesh, const std::string& comment);
 
 }  // namespace rt

@@ -11,6 +11,7 @@
 /// Writing produces a file that reads back to an identical document (every number written so
 /// that it round-trips exactly, materials inline or by name as in the document, names kept).
 
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <stdexcept>
@@ -43,7 +44,8 @@ struct SceneError : std::runtime_error {
                             const std::string& detail);
 };
 
-/// Reads a scene from JSON text. sourceName is what the messages call the file.
+/// Reads a scene from JSON text. sourceName is what the messages call the file; its folder is
+/// where a model file's relative path starts (a mesh's "file"; none: the current directory).
 /// @throws SceneError for malformed JSON or anything the format or a constructor rejects.
 SceneDocument parseScene(std::string_view text, const std::string& sourceName);
 
@@ -60,13 +62,18 @@ inline constexpr std::size_t MAX_SCENE_FILE_BYTES = std::size_t{64} << 20;
 /// each is written as a vector whose normalisation gives exactly the stored one (the shortest
 /// such vector found among small integer ratios, the vector itself and its multiples), so that
 /// reading the export rebuilds the same shapes bit for bit.
+/// The meshes (mini 2) come after the shapes: a mesh read from a model file as its entry (the
+/// file's path relative to folder, the folder of the file being written, or the current
+/// directory when folder is empty; an absolute path as it was given), a mesh given inline or
+/// made in code inline, every vertex and normal written so that it reads back to the same bits.
 /// @throws std::logic_error for a document that cannot be written as a scene file: a camera
 ///         with neither target nor direction, name lists longer than the geometry list, or a
 ///         geometry whose material name is unknown or names a different material.
-nlohmann::ordered_json toJson(const SceneDocument& doc);
+nlohmann::ordered_json toJson(const SceneDocument& doc, const std::filesystem::path& folder = {});
 
-/// toJson(doc) as text: two-space indentation, arrays of numbers on one line, final newline.
-std::string dumpScene(const SceneDocument& doc);
+/// toJson(doc, folder) as text: two-space indentation, arrays of numbers on one line, final
+/// newline.
+std::string dumpScene(const SceneDocument& doc, const std::filesystem::path& folder = {});
 
 /// The values of render.tracer this build accepts (its stages' tracers), in the course's order.
 std::vector<std::string_view> knownTracers();

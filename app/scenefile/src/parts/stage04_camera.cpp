@@ -133,38 +133,50 @@ KeyTable<GeometryFields> geometryTable(std::string_view type) {
   return t;
 }
 
-const std::vector<TypeRule<GeometryFields>>& geometryTypes() {
-  static const KeyTable<GeometryFields> sphere = geometryTable("geometry sphere"),
-                                        plane = geometryTable("geometry plane"),
-                                        triangle = geometryTable("geometry triangle"),
-                                        polygon = geometryTable("geometry polygon"),
-                                        tube = geometryTable("geometry tube"),
-                                        cylinder = geometryTable("geometry cylinder");
-  static const std::vector<TypeRule<GeometryFields>> types = {
-      {"sphere", &sphere,
-       [](const Node& n, GeometryFields& f) {
-         addGeometry(n, f, "radius", [&] { return Sphere(*f.center, f.radius); });
-       }},
-      {"plane", &plane, buildPlane},
-      {"triangle", &triangle,
-       [](const Node& n, GeometryFields& f) {
-         const std::vector<Point>& v = f.vertices;
-         addGeometry(n, f, "vertices", [&] { return Triangle(v[0], v[1], v[2]); });
-       }},
-      {"polygon", &polygon,
-       [](const Node& n, GeometryFields& f) {
-         addGeometry(n, f, "vertices", [&] { return Polygon(f.vertices); });
-       }},
-      {"tube", &tube,
-       [](const Node& n, GeometryFields& f) {
-         addGeometry(n, f, "", [&] { return Tube(f.radius, *f.axis); });
-       }},
-      {"cylinder", &cylinder,
-       [](const Node& n, GeometryFields& f) {
-         addGeometry(n, f, "", [&] { return Cylinder(f.radius, *f.axis, f.height); });
-       }},
-  };
-  return types;
+/// The rules of the geometry types this build has (the parts register them: stage 4 the
+/// course's six shapes, mini 2 the mesh), and the types of the stages it lacks.
+struct GeometryRules {
+  std::vector<KeyTable<GeometryFields>> tables;  ///< the rules point into it: never resized
+  std::vector<TypeRule<GeometryFields>> rules;
+  std::vector<AbsentKey> absent;
+};
+
+const GeometryRules& geometryRules() {
+  static const GeometryRules rules = [] {
+    const std::vector<GeometryType>& types = sceneFormat().geometryTypes();
+    GeometryRules r;
+    r.tables.reserve(types.size());
+    std::vector<std::string_view> names;
+    for (const GeometryType& t : types) {
+      r.tables.push_back(geometryTable("geometry " + std::string(t.type)));
+      r.rules.push_back({t.type, &r.tables.back(), t.build});
+      names.push_back(t.type);
+    }
+    r.absent = absentTypes("geometry", names);
+    return r;
+  }();
+  return rules;
+}
+
+void addCourseShapeTypes(SceneFormat& format) {
+  using F = GeometryFields;
+  format.addGeometryType("sphere", [](const Node& n, F& f) {
+    addGeometry(n, f, "radius", [&] { return Sphere(*f.center, f.radius); });
+  });
+  format.addGeometryType("plane", buildPlane);
+  format.addGeometryType("triangle", [](const Node& n, F& f) {
+    const std::vector<Point>& v = f.vertices;
+    addGeometry(n, f, "vertices", [&] { return Triangle(v[0], v[1], v[2]); });
+  });
+  format.addGeometryType("polygon", [](const Node& n, F& f) {
+    addGeometry(n, f, "vertices", [&] { return Polygon(f.vertices); });
+  });
+  format.addGeometryType("tube", [](const Node& n, F& f) {
+    addGeometry(n, f, "", [&] { return Tube(f.radius, *f.axis); });
+  });
+  format.addGeometryType("cylinder", [](const Node& n, F& f) {
+    addGeometry(n, f, "", [&] { return Cylinder(f.radius, *f.axis, f.height); });
+  });
 }
 
 void attachGeometries(SceneFormat& format) {
@@ -232,9 +244,14 @@ void attachDocument(SceneFormat& format) {
     readObject(n, keys, f, "an ambient light object {color, kA}");
     d.scene->ambientLight = AmbientLight(f.color, f.kA);
   });
-  format.attach<D>("document", "geometries", [](const Node& n, D&) {
-    readArray(n, "an array of geometries",
-              [](const Node& e) { readTyped(e, geometryTypes(), "geometry"); });
+  format.attach<D>("document", "geometries", [](const Node& n, D& d) {
+    std::vector<std::uint32_t>& elementOf = n.context().state<ShapeElements>().elementOf;
+    std::uint32_t element = 0;
+    readArray(n, "an array of geometries", [&](const Node& e) {
+      const GeometryRules& g = geometryRules();
+      readTyped(e, g.rules, "geometry", g.absent);
+      elementOf.resize(d.scene->geometries.size(), element++);
+    });
   });
   format.attach<D>("document", "render", [](const Node& n, D& d) {
     static const KeyTable<RenderSettings> keys = sceneFormat().table<RenderSettings>("render");
@@ -364,6 +381,7 @@ void registerFormat_stage04_camera(SceneFormat& format) {
   attachDocument(format);
   attachCamera(format);
   attachGeometries(format);
+  addCourseShapeTypes(format);
   attachRender(format);
   for (const char* tracer : {"rays", "normals", "hits", "ambient"}) format.addTracer(tracer);
   format.liftScene = [](const Scene& scene) { return std::make_shared<Scene>(scene); };

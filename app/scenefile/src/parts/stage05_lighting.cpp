@@ -104,6 +104,21 @@ std::uint32_t appearanceRow(Context& ctx, const Look& look) {
   return row;
 }
 
+}  // namespace
+
+std::uint32_t appearanceRowOf(const Node& node, GeometryFields& fields) {
+  return appearanceRow(node.context(), lookOf(fields));
+}
+
+std::uint32_t appearanceRowWith(const Node& material, const GeometryFields& fields) {
+  GeometryFields other;
+  other.look = fields.look;
+  readGeometryMaterial(material, other);
+  return appearanceRow(material.context(), lookOf(other));
+}
+
+namespace {
+
 void addLight(const Node& n, LightSource light) {
   try {
     litScene(n.context().doc).addLight(std::move(light));
@@ -286,26 +301,30 @@ void writeDocument(const SceneDocument& doc, Json& j) {
 }
 
 void writeGeometry(const SceneDocument& doc, std::uint32_t i, Json& g) {
-  const LitScene& scene = litScene(doc);
-  const Appearance& look = scene.appearanceOf(i);
+  writeAppearance(doc, litScene(doc).appearanceIndex[i], g, "geometry " + std::to_string(i));
+}
+
+}  // namespace
+
+void writeAppearance(const SceneDocument& doc, std::uint32_t row, Json& g,
+                     const std::string& what) {
+  const Appearance& look = litScene(doc).appearances.at(row);
   if (!scenefile::same(look.emission.rgb(), Color::BLACK.rgb()))
     g["emission"] = color(look.emission);
-  if (const std::string* materialName = materialNameOf(doc, i)) {
+  if (const std::string* materialName = materialNameOfRow(doc, row)) {
     const NamedMaterials& named = namedMaterials(doc);
     const auto it = named.materials.find(*materialName);
     if (it == named.materials.end())
-      throw std::logic_error("toJson: geometry " + std::to_string(i) + " names material '" +
-                             *materialName + "', which is not among the document's materials");
+      throw std::logic_error("toJson: " + what + " names material '" + *materialName +
+                             "', which is not among the document's materials");
     if (!same(it->second, look.material))
-      throw std::logic_error("toJson: geometry " + std::to_string(i) + " names material '" +
-                             *materialName + "' but carries a different material");
+      throw std::logic_error("toJson: " + what + " names material '" + *materialName +
+                             "' but carries a different material");
     g["material"] = *materialName;
   } else if (!same(look.material, Material{})) {
     g["material"] = materialJson(look.material);
   }
 }
-
-}  // namespace
 
 void registerFormat_stage05_lighting(SceneFormat& format) {
   attachLights(format);

@@ -18,13 +18,15 @@ namespace rt::scenefile {
 
 namespace {
 
-/// "geometries[4] ('lid'), geometries[5]", at most six, then "and N more".
-std::string geometryList(const SceneDocument& doc, const std::vector<std::uint32_t>& indices) {
+/// "geometries[4] ('lid'), geometries[5]", at most six, then "and N more": the shapes by their
+/// elements in the file (elementOf, see ShapeElements).
+std::string geometryList(const SceneDocument& doc, const std::vector<std::uint32_t>& indices,
+                         const std::vector<std::uint32_t>& elementOf) {
   constexpr std::size_t LISTED = 6;
   std::string out;
   for (std::size_t k = 0; k < indices.size() && k < LISTED; ++k) {
     if (k) out += ", ";
-    out += "geometries[" + std::to_string(indices[k]) + "]";
+    out += "geometries[" + std::to_string(elementOf.at(indices[k])) + "]";
     if (const std::string* name = doc.geometryName(indices[k])) out += " ('" + *name + "')";
   }
   if (indices.size() > LISTED) out += " and " + std::to_string(indices.size() - LISTED) + " more";
@@ -45,7 +47,8 @@ std::string materialText(const SceneDocument& doc, std::uint32_t geometry) {
 /// face to reverse.
 void warnOfMixedWinding(const Node& root) {
   SceneDocument& doc = root.context().doc;
-  std::map<std::uint32_t, std::string> warnings;  // by the first face to reverse
+  std::map<std::uint32_t, std::string> warnings;  // by the element of the first face to reverse
+  const std::vector<std::uint32_t>& elementOf = root.context().state<ShapeElements>().elementOf;
   for (const WindingProblem& s : glassWindingProblems(litScene(doc))) {
     const std::size_t n = s.reverse.size() + s.keep.size();
     const bool one = s.reverse.size() == 1;
@@ -53,24 +56,24 @@ void warnOfMixedWinding(const Node& root) {
         "mixed winding in " + std::string(s.closed ? "a closed glass shape" : "a glass surface") +
         " of " + std::to_string(n) + " faces (" + materialText(doc, s.reverse.front()) + "): ";
     if (s.closed) {
-      detail += "the normal" + std::string(one ? " of " : "s of ") + geometryList(doc, s.reverse) +
-                (one ? " points" : " point") + " inwards, those of " + geometryList(doc, s.keep) +
-                " outwards";
+      detail += "the normal" + std::string(one ? " of " : "s of ") +
+                geometryList(doc, s.reverse, elementOf) + (one ? " points" : " point") +
+                " inwards, those of " + geometryList(doc, s.keep, elementOf) + " outwards";
     } else {
-      detail += geometryList(doc, s.reverse) + (one ? " is" : " are") + " wound against " +
-                geometryList(doc, s.keep);
+      detail += geometryList(doc, s.reverse, elementOf) + (one ? " is" : " are") +
+                " wound against " + geometryList(doc, s.keep, elementOf);
     }
     detail +=
         " (an edge shared by two faces runs the same way in both); refraction needs outward "
         "normals: reverse the order of the vertices of " +
         std::string(s.closed ? (one ? "that face" : "those faces") : "one side");
-    warnings.emplace(s.reverse.front(), std::move(detail));
+    warnings.emplace(elementOf.at(s.reverse.front()), std::move(detail));
   }
   if (warnings.empty() || !root.find("geometries")) return;
-  // Each warning at its first face's place in the file (the i-th element is geometry i).
-  std::uint32_t i = 0;
+  // Each warning at its first face's place in the file.
+  std::uint32_t element = 0;
   root.member("geometries").forEachElement([&](const Node& g) {
-    if (const auto it = warnings.find(i++); it != warnings.end())
+    if (const auto it = warnings.find(element++); it != warnings.end())
       doc.warnings.push_back(g.message(it->second));
   });
 }
