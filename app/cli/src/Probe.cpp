@@ -12,6 +12,7 @@
 #include "common/JsonText.h"
 #include "intersections/Geometries.h"
 #include "intersections/Primitives.h"
+#include "scenefile/MeshDocument.h"
 
 namespace rt::cli {
 
@@ -80,7 +81,7 @@ std::string probeJson(const SceneDocument& doc, const Ray& ray, const Color& col
       const MeshTriangle m = primitives.meshTriangle(h.geometry);
       hit["mesh"] = m.mesh;
       hit["triangle"] = m.triangle;
-      name = doc.meshName(m.mesh);
+      name = meshName(doc, m.mesh);
     }
     hit["name"] = name ? Json(*name) : Json(nullptr);
     hits.push_back(std::move(hit));

@@ -53,10 +53,6 @@ struct SceneDocument {
   /// The names the file gave to shapes, by geometry index: only the named ones (a generated
   /// scene of a million unnamed stars keeps none).
   std::map<std::uint32_t, std::string> geometryNames;
-  /// The names the file gave to triangle meshes, by mesh index (the order of
-  /// Geometries::meshes()): only the named ones. A model file of several material groups makes
-  /// several meshes of one entry, each with the entry's name.
-  std::map<std::uint32_t, std::string> meshNames;
   /// What the reader found questionable but not wrong, one message per problem, each naming the
   /// file, line and column and the JSON path like an error ("x.json:9:5: geometries[4]: ...";
   /// stage 7: glass faces wound both ways). Empty for a built-in scene; never written.
@@ -66,12 +62,6 @@ struct SceneDocument {
   const std::string* geometryName(std::uint32_t i) const {
     const auto it = geometryNames.find(i);
     return it == geometryNames.end() ? nullptr : &it->second;
-  }
-
-  /// Mesh m's name, or nullptr when it has none.
-  const std::string* meshName(std::uint32_t m) const {
-    const auto it = meshNames.find(m);
-    return it == meshNames.end() ? nullptr : &it->second;
   }
 
   /// What a stage's part of the format keeps about the file beyond the scene (stage 5: the named
