@@ -45,7 +45,7 @@ enum class ScalingAccel { Bvh, Grid };
 struct TimedStructure {
   std::unique_ptr<Bvh> bvh;    ///< null for ScalingAccel::Grid
   std::unique_ptr<Grid> grid;  ///< null for ScalingAccel::Bvh
-  double buildSeconds = 0;     ///< the build (one thread): this thread's CPU time
+  double buildSeconds = 0;     ///< the build's wall time (the BVH's on every core, the grid's on one)
 
   /// The structure, as a tracer takes it (null before one is built).
   const Intersectable* get() const noexcept;

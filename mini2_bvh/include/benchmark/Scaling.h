@@ -56,7 +56,7 @@ struct ScalingMeasurement {
   std::uint64_t shapes = 0;          ///< the scene's shapes: stars, suns, core, box, frame, ...
   std::uint64_t triangles = 0;       ///< its meshes' triangles: the teapot's
   double generateSeconds = 0;        ///< the scene's generation: CPU time
-  double buildSeconds = 0;           ///< the BVH's (or grid's) build (one thread): CPU time
+  double buildSeconds = 0;           ///< the BVH's (or grid's) build: wall time
   std::uint64_t structureBytes = 0;  ///< the BVH's (or grid's) memory
   std::uint64_t meshBytes = 0;       ///< the meshes' arrays (vertices, indices, normals)
   TimedRenders renders;              ///< the scene's tracer through the structure, a ray per pixel

@@ -227,7 +227,7 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format) {
   return what + ", through the BVH and through the grid, " + std::to_string(table.threads) +
          " threads, " + table.machine + "; " + rendersOf(table.repeat) + "; each " +
          std::string(kind.scene) +
-         " and structure in a process of its own: build in CPU time, render in wall time, peak = "
+         " and structure in a process of its own: build and render in wall time, peak = "
          "its ru_maxrss, bytes per " +
          per + " = (peak - " + mebibytes(table.baselineBytes) + " of an empty process) / " +
          (kind.scene == GALAXY_SCALING.scene ? "stars" : std::string(kind.count)) + "\n\n" +
