@@ -202,6 +202,10 @@ class Builder {
     auto work = [&] {
       for (std::size_t k; (k = next.fetch_add(1)) < order.size();) {
         Task& t = tasks[order[k]];
+        // Address space for the most nodes a range can make (2n - 1, and two more per leaf
+        // of both kinds): only the nodes written take memory, and no array is copied growing.
+        const std::size_t n = t.end - t.begin;
+        t.nodes.reserve(3 * n);
         Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
         b.buildNode(t.begin, t.end, t.depth, t.bounds);
         t.maxDepth = b.maxDepth_;
