@@ -81,7 +81,10 @@ if [[ -f "$options_file" ]]; then
   while read -r image scene rest; do
     [[ -z "$image" || "$image" == \#* ]] && continue
     [[ -n "$scene" ]] || rt_die "$options_file: the image $image names no scene"
-    if ! grep -qx -- "$scene" <<<"$scenes"; then
+    # A scene file of scenes/ (a path ending in .json) is rendered as it is.
+    if [[ "$scene" == *.json ]]; then
+      [[ -f "$scene" ]] || rt_die "$options_file: the image $image names $scene, which does not exist"
+    elif ! grep -qx -- "$scene" <<<"$scenes"; then
       echo "skipped: docs/images/$image.png ($scene is not a built-in scene of this build)"
       continue
     fi
