@@ -25,6 +25,9 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <system_error>
 #include <thread>
 #include <utility>
 #include <variant>
@@ -199,23 +202,38 @@ class Builder {
       return tasks[a].end - tasks[a].begin > tasks[b].end - tasks[b].begin;
     });
     std::atomic<std::size_t> next{0};
+    // The first exception a thread meets (std::bad_alloc on a huge scene) stops every thread
+    // from taking more tasks and is thrown again on the calling thread, after the joins.
+    std::mutex failure;
+    std::exception_ptr error;
     auto work = [&] {
-      for (std::size_t k; (k = next.fetch_add(1)) < order.size();) {
-        Task& t = tasks[order[k]];
-        // Address space for the most nodes a range can make (2n - 1, and two more per leaf
-        // of both kinds): only the nodes written take memory, and no array is copied growing.
-        const std::size_t n = t.end - t.begin;
-        t.nodes.reserve(3 * n);
-        Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
-        b.buildNode(t.begin, t.end, t.depth, t.bounds);
-        t.maxDepth = b.maxDepth_;
+      try {
+        for (std::size_t k; (k = next.fetch_add(1)) < order.size();) {
+          Task& t = tasks[order[k]];
+          // Address space for the most nodes a range can make (2n - 1, and two more per leaf
+          // of both kinds): only the nodes written take memory, and no array is copied growing.
+          const std::size_t n = t.end - t.begin;
+          t.nodes.reserve(3 * n);
+          Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
+          b.buildNode(t.begin, t.end, t.depth, t.bounds);
+          t.maxDepth = b.maxDepth_;
+        }
+      } catch (...) {
+        next = order.size();
+        const std::lock_guard<std::mutex> lock(failure);
+        if (!error) error = std::current_exception();
       }
     };
     std::vector<std::thread> helpers;
     const int extra = std::min<int>(threads, static_cast<int>(tasks.size())) - 1;
-    for (int i = 0; i < extra; ++i) helpers.emplace_back(work);
+    try {
+      for (int i = 0; i < extra; ++i) helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      // No more threads to be had: the ones started and this one build it all.
+    }
     work();
     for (std::thread& h : helpers) h.join();
+    if (error) std::rethrow_exception(error);
   }
 
   /// Step 3 for skeleton node `index`: returns the index of its node in the tree.
@@ -241,7 +259,7 @@ class Builder {
     }
     sphereShapes_.insert(sphereShapes_.end(), t.spheres.begin(), t.spheres.end());
     otherShapes_.insert(otherShapes_.end(), t.others.begin(), t.others.end());
-    std::vector<BvhNode>().swap(t.nodes);  // done with: the peak stays near one tree's size
+    std::vector<BvhNode>().swap(t.nodes);  // done with: freed as soon as it is copied
     return at;
   }
 
