@@ -143,6 +143,9 @@ class Builder {
     std::vector<Task> tasks;
     split(0, n, 0, all, grain, skeleton, tasks);
     runTasks(tasks, threads);
+    // The records are done with (the tasks hold every leaf's primitives): freed before the
+    // tasks' arrays are copied into the tree, so that the two do not add up at the peak.
+    std::vector<BuildRecord>().swap(records_);
     emit(0, skeleton, tasks);
     for (const Task& t : tasks) maxDepth_ = std::max(maxDepth_, t.maxDepth);
     return maxDepth_;
