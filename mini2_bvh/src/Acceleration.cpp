@@ -6,6 +6,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "bvh/WideBvh.h"
 #include "grid/Grid.h"
 
 namespace rt {
@@ -17,6 +18,7 @@ bool isAccelerationName(std::string_view name) noexcept {
 
 std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes) {
   if (name == "bvh") return std::make_unique<Bvh>(shapes);
+  if (name == "bvh4") return std::make_unique<WideBvh>(shapes);
   if (name == "cbr") return std::make_unique<Cbr>(shapes);
   if (name == "grid") return std::make_unique<Grid>(shapes);
   if (name == "none") return nullptr;

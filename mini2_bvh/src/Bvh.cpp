@@ -62,23 +62,6 @@ bool Bvh::traverse(const Ray& ray, const Limit& limit, const Leaf& leaf,
   // END SOLUTION
 }
 
-template <typename F>
-bool Bvh::forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& f) const {
-  const std::uint32_t end = leaf.offset + leaf.count;
-  if (leaf.kind == BvhNode::Kind::Spheres) {
-    for (std::uint32_t k = leaf.offset; k < end; ++k) {
-      const CompactSphere& s = spheres_[k];
-      if (!f(intersectSphereRoots(s.centre, s.radius, ray), sphereShapes_[k])) return false;
-    }
-  } else {
-    for (std::uint32_t k = leaf.offset; k < end; ++k) {
-      const std::uint32_t shape = otherShapes_[k];
-      if (!f(primitives_.roots(shape, ray), shape)) return false;
-    }
-  }
-  return true;
-}
-
 std::optional<Hit> Bvh::closestHit(const Ray& ray, double tMax,
                                    QueryCounts* counts) const noexcept {
   // BEGIN SOLUTION: hint: Bvh::closestHit, unbounded shapes, then the walk, bound min(limit, t)

@@ -1,4 +1,4 @@
-// mini2: the CBR, the BVH and the grid answer exactly as the linear Geometries over the same
+// mini2: the CBR, the BVH, the wide BVH and the grid answer exactly as the linear Geometries over the same
 // shapes: closestHit returns the same t (compared with ==) and the same index, forEachHit visits
 // the same multiset of (t, index) hits and stops when told. Random scenes and rays with fixed
 // seeds; each query is also repeated with tMax exactly at its closest hit (the inclusive bound) and
@@ -15,6 +15,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "bvh/WideBvh.h"
 #include "geometries/UtahTeapot.h"
 #include "grid/Grid.h"
 
@@ -75,21 +76,24 @@ std::string describe(const std::optional<Hit>& hit) {
   return ::testing::AssertionSuccess();
 }
 
-/// Every query, with its two derived queries, on the CBR, the BVH and the grid of the scene.
+/// Every query, with its two derived queries, on the CBR, the BVH, the wide BVH and the grid of
+/// the scene.
 /// Reports the first few differences and returns how many queries were checked.
 int expectEquivalent(const Geometries& scene, const std::vector<Query>& queries, Random& random) {
   const Cbr cbr(scene);
   const Bvh bvh(scene);
+  const WideBvh wide(scene);
   const Grid grid(scene);
   int checked = 0, failures = 0;
   auto check = [&](const Ray& ray, double tMax) {
     const auto stopAfter = static_cast<std::uint32_t>(random.integer(1, 4));
     for (const Intersectable* fast :
          {static_cast<const Intersectable*>(&cbr), static_cast<const Intersectable*>(&bvh),
-          static_cast<const Intersectable*>(&grid)}) {
+          static_cast<const Intersectable*>(&wide), static_cast<const Intersectable*>(&grid)}) {
       const ::testing::AssertionResult result = sameAnswers(scene, *fast, ray, tMax, stopAfter);
       if (!result && ++failures <= 5)
         ADD_FAILURE() << (fast == &bvh    ? "Bvh "
+                          : fast == &wide ? "WideBvh "
                           : fast == &grid ? "Grid "
                                           : "Cbr ")
                       << result.message();

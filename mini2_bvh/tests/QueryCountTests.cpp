@@ -8,6 +8,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "bvh/WideBvh.h"
 #include "geometries/UtahTeapot.h"
 #include "grid/Grid.h"
 #include "support/AllocationCounter.h"
@@ -133,8 +134,8 @@ TEST(QueryCountTests, meshTriangles) {
 }
 
 TEST(QueryCountTests, noAllocationPerRay) {
-  // TC01: closestHit and forEachHit of the CBR, the BVH and the grid allocate nothing, over
-  // shapes and mesh triangles (the counter works: one operator new counts one)
+  // TC01: closestHit and forEachHit of the CBR, the BVH, the wide BVH and the grid allocate
+  // nothing, over shapes and mesh triangles (the counter works: one operator new counts one)
   EXPECT_EQ(1, testing::allocationsDuring([] { ::operator delete(::operator new(16)); }));
   test::Random random(8);
   const Aabb box(Double3(-30), Double3(30));
@@ -143,6 +144,7 @@ TEST(QueryCountTests, noAllocationPerRay) {
   test::addUnbounded(scene, box);
   scene.addMesh(test::movedMesh(utahTeapot(6), Double3(0, 0, -1)));
   const Bvh bvh(scene);
+  const WideBvh wide(scene);
   const Cbr cbr(scene);
   const Grid grid(scene);
   const std::vector<test::Query> queries = test::randomQueries(random, 500, box);
@@ -150,8 +152,8 @@ TEST(QueryCountTests, noAllocationPerRay) {
   const long allocations = testing::allocationsDuring([&] {
     for (const test::Query& q : queries) {
       for (const Intersectable* s :
-           {static_cast<const Intersectable*>(&bvh), static_cast<const Intersectable*>(&cbr),
-            static_cast<const Intersectable*>(&grid)}) {
+           {static_cast<const Intersectable*>(&bvh), static_cast<const Intersectable*>(&wide),
+            static_cast<const Intersectable*>(&cbr), static_cast<const Intersectable*>(&grid)}) {
         if (const auto hit = s->closestHit(q.ray, q.tMax)) sink += hit->t;
         s->forEachHit(q.ray, q.tMax, [&sink](const Hit& h) {
           sink += h.t;

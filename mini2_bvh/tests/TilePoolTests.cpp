@@ -17,6 +17,7 @@
 
 #include "bvh/Bvh.h"
 #include "bvh/Cbr.h"
+#include "bvh/WideBvh.h"
 #include "camera/Camera.h"
 #include "geometries/UtahTeapot.h"
 #include "glossy/BeamTracer.h"
@@ -54,7 +55,8 @@ struct SampledScene {
   std::unique_ptr<Bvh> bvh;
   std::unique_ptr<Grid> grid;
   std::unique_ptr<Cbr> cbr;
-  std::unique_ptr<RayTracer> linear, accelerated, gridded, boxed;
+  std::unique_ptr<WideBvh> wide;
+  std::unique_ptr<RayTracer> linear, accelerated, gridded, boxed, widened;
   std::unique_ptr<PixelSampler> sampler;
   Camera camera;
 };
@@ -71,6 +73,8 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
                  nullptr,
                  nullptr,
                  nullptr,
+                 nullptr,
+                 nullptr,
                  std::move(sampler),
                  camera.builder().build()};
   s.bvh = std::make_unique<Bvh>(s.scene->geometries);
@@ -80,6 +84,8 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
   s.gridded = std::make_unique<Tracer>(*s.scene, s.grid.get());
   s.cbr = std::make_unique<Cbr>(s.scene->geometries);
   s.boxed = std::make_unique<Tracer>(*s.scene, s.cbr.get());
+  s.wide = std::make_unique<WideBvh>(s.scene->geometries);
+  s.widened = std::make_unique<Tracer>(*s.scene, s.wide.get());
   return s;
 }
 
@@ -225,6 +231,20 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
     EXPECT_EQ(firstDifference(linear, serialCbr), "");
     renderImage({s.camera, *s.boxed, *s.sampler}, pooledCbr, {.threads = 2, .tileSize = 5});
     EXPECT_EQ(firstDifference(linear, pooledCbr), "");
+    // TC04: through the wide BVH, serial and on 1 to 4 threads: the linear scan's image, and the
+    // binary BVH's ray counts (the same rays; only the nodes visited differ)
+    Image serialWide(nX, nY);
+    const RayCounts wideCounts = renderBlock({s.camera, *s.widened, *s.sampler}, all, serialWide);
+    EXPECT_EQ(firstDifference(linear, serialWide), "");
+    EXPECT_EQ(wideCounts.primary, counts.primary);
+    EXPECT_EQ(wideCounts.secondary, counts.secondary);
+    EXPECT_EQ(wideCounts.shadow, counts.shadow);
+    for (int threads = 1; threads <= 4; ++threads) {
+      Image pooledWide(nX, nY);
+      renderImage({s.camera, *s.widened, *s.sampler}, pooledWide,
+                  {.threads = threads, .tileSize = 3 + threads});
+      EXPECT_EQ(firstDifference(linear, pooledWide), "") << threads << " threads";
+    }
   }
 }
 

@@ -33,11 +33,12 @@ using test::run;
 /// mini 2's) but stage 4's debugging views.
 const std::vector<std::string> STAGE_TRACERS{"ambient", "phong", "shadow", "whitted", "beams"};
 
-/// The rows' names in the documented order: the reference report's four and the grid's, then one
-/// per stage's tracer, named by its stage.
+/// The rows' names in the documented order: the reference report's four, the wide BVH's and the
+/// grid's, then one per stage's tracer, named by its stage.
 std::vector<std::string> expectedNames() {
-  std::vector<std::string> names{"no acceleration", "threads", "threads + CBR",
-                                 "threads + CBR + BVH", "threads + grid"};
+  std::vector<std::string> names{"no acceleration",    "threads",
+                                 "threads + CBR",      "threads + CBR + BVH",
+                                 "threads + wide BVH", "threads + grid"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   return names;
 }
@@ -74,33 +75,35 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_EQ(got, sortedKeys) << i;
     EXPECT_EQ(rows[i]["name"], names[i]) << i;
   }
-  // TC03: the reference rows and the grid's render with the galaxy's tracer, beams, and the
-  // report's accelerations, then the grid
-  const std::vector<std::string> accels{"none", "none", "cbr", "bvh", "grid"};
-  for (std::size_t i = 0; i < 5; ++i) {
+  // TC03: the reference rows, the wide BVH's and the grid's render with the galaxy's tracer,
+  // beams, and the report's accelerations, then the wide BVH and the grid
+  const std::vector<std::string> accels{"none", "none", "cbr", "bvh", "bvh4", "grid"};
+  for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "beams") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
   }
-  // TC04: then every stage's tracer, in the course's order, through the BVH (not the debugging
-  // views rays, normals and hits)
-  for (std::size_t i = 5; i < rows.size(); ++i) {
-    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 5]) << i;
-    EXPECT_EQ(rows[i]["accel"], "bvh") << i;
+  // TC04: then every stage's tracer, in the course's order, through the default BVH, the wide
+  // one (not the debugging views rays, normals and hits)
+  for (std::size_t i = 6; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 6]) << i;
+    EXPECT_EQ(rows[i]["accel"], "bvh4") << i;
   }
   // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles)
   for (const json& row : rows) EXPECT_EQ(row["threads"], 1) << row["name"];
   // TC06: one camera ray per pixel in every row
   for (const json& row : rows) EXPECT_EQ(row["primary"], 144) << row["name"];
-  // TC07: the reference rows and the grid's trace the same rays: the images are the same bits,
-  // so are the counts
-  for (std::size_t i = 1; i < 5; ++i)
+  // TC07: the reference rows, the wide BVH's and the grid's trace the same rays: the images are
+  // the same bits, so are the counts
+  for (std::size_t i = 1; i < 6; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_GT(rows[0]["secondary"].get<long>(), 0);
   EXPECT_GT(rows[0]["shadow"].get<long>(), 0);
-  // TC08: the beams row through the BVH is the fourth row again
+  // TC08: the beams row through the wide BVH is the fifth row again; the wide tree visits fewer
+  // nodes than the binary one (its node holds four boxes)
   for (const char* kind : {"primary", "secondary", "shadow", "nodesPerRay"})
-    EXPECT_EQ(rows.back()[kind], rows[3][kind]) << kind;
+    EXPECT_EQ(rows.back()[kind], rows[4][kind]) << kind;
+  EXPECT_LT(rows[4]["nodesPerRay"].get<double>(), rows[3]["nodesPerRay"].get<double>());
   // TC09: nodes per ray: none without a hierarchy, some through the BVH (and cells through the
   // grid)
   EXPECT_EQ(rows[0]["nodesPerRay"], 0);
@@ -145,19 +148,19 @@ TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
       << j["reference"];
   // TC02: the lecturer's thread rows, then the structures with every core, then every stage's
   // tracer through the BVH
-  std::vector<std::string> names{"no acceleration",     "2 threads",     "3 threads",
-                                 "4 threads",           "threads",       "threads + CBR",
-                                 "threads + CBR + BVH", "threads + grid"};
+  std::vector<std::string> names{
+      "no acceleration", "2 threads",           "3 threads",          "4 threads",     "threads",
+      "threads + CBR",   "threads + CBR + BVH", "threads + wide BVH", "threads + grid"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   const json& rows = j["rows"];
   ASSERT_EQ(rows.size(), names.size());
   for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i]["name"], names[i]) << i;
   // TC03: the teapot's tracer (Whitted), the accelerations and the threads of each
   const int every = std::min(cores(), 9);
-  const std::vector<std::string> accels{"none", "none", "none", "none",
-                                        "none", "cbr",  "bvh",  "grid"};
-  const std::vector<int> threads{1, 2, 3, 4, every, every, every, every};
-  for (std::size_t i = 0; i < 8; ++i) {
+  const std::vector<std::string> accels{"none", "none", "none", "none", "none",
+                                        "cbr",  "bvh",  "bvh4", "grid"};
+  const std::vector<int> threads{1, 2, 3, 4, every, every, every, every, every};
+  for (std::size_t i = 0; i < 9; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "whitted") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
     EXPECT_EQ(rows[i]["threads"], threads[i]) << i;
@@ -168,9 +171,9 @@ TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
   for (std::size_t i = 5; i < rows.size(); ++i)
     EXPECT_TRUE(rows[i]["referenceSeconds"].is_null()) << i;
-  // TC05: the eight rows trace the same rays (the same image): a camera ray per pixel and
+  // TC05: the nine rows trace the same rays (the same image): a camera ray per pixel and
   // shadow rays, none reflected (the teapot is matte)
-  for (std::size_t i = 0; i < 8; ++i) {
+  for (std::size_t i = 0; i < 9; ++i) {
     EXPECT_EQ(rows[i]["primary"], 96 * 96) << i;
     EXPECT_EQ(rows[i]["secondary"], 0) << i;
     EXPECT_EQ(rows[i]["shadow"], rows[0]["shadow"]) << i;
@@ -201,7 +204,7 @@ TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
   EXPECT_EQ(rows[0]["threads"], 1);
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i]["threads"], 2) << i;
   // TC02: the same rays on one thread and on two
-  for (std::size_t i = 1; i < 5; ++i)
+  for (std::size_t i = 1; i < 6; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_EQ(rows[0]["primary"], 64 * 9);

@@ -369,7 +369,7 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       // TC25: an unknown acceleration, with a suggestion and the known ones
       {"TC25",
        {"render", "two-color", "--accel", "bhv"},
-       "rt: --accel: unknown acceleration 'bhv'; did you mean 'bvh'? (known: none cbr bvh grid)\n"},
+       "rt: --accel: unknown acceleration 'bhv'; did you mean 'bvh'? (known: none cbr bvh bvh4 grid)\n"},
       // TC26: threads beyond the pool's limit
       {"TC26",
        {"render", "two-color", "--threads", "1025"},

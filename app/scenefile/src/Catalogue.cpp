@@ -110,7 +110,7 @@ constexpr CatalogueKey KEYS[] = {
     {"render", "adaptiveThreshold", M1, D, "16"},
     {"render", "adaptiveDepth", M1, D, "2"},
     {"render", "beamDepth", M1, D, "\"first\""},
-    {"render", "accel", M2, D, "\"bvh\""},
+    {"render", "accel", M2, D, "\"bvh4\""},
     {"render", "threads", M2, D, "0"},
 };
 

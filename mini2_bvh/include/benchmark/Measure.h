@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bvh/Bvh.h"
+#include "bvh/WideBvh.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
@@ -41,9 +42,10 @@ double median(std::vector<double> values);
 /// The structure the scalings compare.
 enum class ScalingAccel { Bvh, Grid };
 
-/// A BVH or a grid over a scene's primitives, its build timed. The scene must outlive it.
+/// A BVH (the default one: wide, WideBvh.h) or a grid over a scene's primitives, its build
+/// timed (the binary build and the collapse). The scene must outlive it.
 struct TimedStructure {
-  std::unique_ptr<Bvh> bvh;    ///< null for ScalingAccel::Grid
+  std::unique_ptr<WideBvh> bvh;  ///< null for ScalingAccel::Grid
   std::unique_ptr<Grid> grid;  ///< null for ScalingAccel::Bvh
   double buildSeconds = 0;     ///< the build's wall time (the BVH's on every core, the grid's on one)
 

@@ -14,9 +14,14 @@
 namespace rt {
 
 /// "none": the scene's own list (the course's linear search); "cbr": a bounding box around each
-/// shape, tested before the shape; "bvh": the bounding volume hierarchy; "grid": the regular grid
-/// of voxels walked by 3D-DDA.
-inline constexpr std::array<std::string_view, 4> ACCELERATION_NAMES{"none", "cbr", "bvh", "grid"};
+/// shape, tested before the shape; "bvh": the bounding volume hierarchy, binary (the course's);
+/// "bvh4": the same tree collapsed into nodes of four boxes tested together (WideBvh.h), the
+/// default; "grid": the regular grid of voxels walked by 3D-DDA.
+inline constexpr std::array<std::string_view, 5> ACCELERATION_NAMES{"none", "cbr", "bvh", "bvh4",
+                                                                    "grid"};
+
+/// What a render uses when neither the scene nor the command line names an acceleration.
+inline constexpr std::string_view DEFAULT_ACCELERATION = "bvh4";
 
 /// True when name is one of ACCELERATION_NAMES.
 bool isAccelerationName(std::string_view name) noexcept;

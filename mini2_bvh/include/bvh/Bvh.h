@@ -17,6 +17,7 @@
 #include "bvh/BvhNode.h"
 #include "geometries/Geometry.h"
 #include "intersections/Geometries.h"
+#include "intersections/Intersect.h"
 #include "intersections/Intersectable.h"
 #include "intersections/Primitives.h"
 
@@ -98,6 +99,9 @@ class Bvh final : public Intersectable {
   };
 
  private:
+  /// The wide BVH collapses this tree's nodes and walks down to its leaves (forEachPrimitive).
+  friend class WideBvh;
+
   /// Walks the nodes whose box the ray meets before limit() (asked again at every node, so a
   /// closest-hit query can shrink it), near child first, calling leaf(node) at each leaf reached;
   /// stops when leaf returns false, and then returns false.
@@ -116,5 +120,22 @@ class Bvh final : public Intersectable {
   std::vector<std::uint32_t> unbounded_;     ///< planes and tubes (and the like): their numbers
   int depth_ = 0;
 };
+
+template <typename F>
+inline bool Bvh::forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& f) const {
+  const std::uint32_t end = leaf.offset + leaf.count;
+  if (leaf.kind == BvhNode::Kind::Spheres) {
+    for (std::uint32_t k = leaf.offset; k < end; ++k) {
+      const CompactSphere& s = spheres_[k];
+      if (!f(intersectSphereRoots(s.centre, s.radius, ray), sphereShapes_[k])) return false;
+    }
+  } else {
+    for (std::uint32_t k = leaf.offset; k < end; ++k) {
+      const std::uint32_t shape = otherShapes_[k];
+      if (!f(primitives_.roots(shape, ray), shape)) return false;
+    }
+  }
+  return true;
+}
 
 }  // namespace rt

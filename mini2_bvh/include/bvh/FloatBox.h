@@ -13,6 +13,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "bvh/Aabb.h"
@@ -47,6 +50,27 @@ struct FloatBox {
     return Aabb(Double3(lo[0], lo[1], lo[2]), Double3(hi[0], hi[1], hi[2]));
   }
 };
+
+/// The largest float <= x (-∞ below the float range, FLT_MAX above it). A double beyond the
+/// float range must not be cast (undefined behaviour): it is clamped first. The step down is
+/// done on the bits, without a branch (the next float towards −∞ of a positive float is its bit
+/// pattern minus one, of a negative one its pattern plus one), not with std::nextafter, a
+/// library call: the wide BVH rounds twelve numbers per ray with this.
+inline float floatBelow(double x) noexcept {
+  constexpr float max = std::numeric_limits<float>::max();
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  if (x >= max) return max;
+  if (x < -max) return -inf;
+  const float f = static_cast<float>(x);  // round to nearest: may land above x
+  // When f > x (then x >= −FLT_MAX keeps f above −FLT_MAX): a positive f steps down by one
+  // bit pattern, a negative one up; f = ±0 means x is a negative number nearer to 0 than half
+  // the smallest subnormal, whose float below is −(smallest subnormal), the pattern of −0 plus 1.
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  const std::uint32_t below = f > 0 ? bits - 1 : (bits | 0x8000'0000u) + 1;
+  return f > x ? std::bit_cast<float>(below) : f;
+}
+/// The smallest float >= x (+∞ above the float range, -FLT_MAX below it).
+inline float floatAbove(double x) noexcept { return -floatBelow(-x); }
 
 /// The relative margin added to a shape's exact box before it is stored: 2^-20 of the largest
 /// absolute coordinate of the box, on every side.

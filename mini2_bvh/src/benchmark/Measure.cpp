@@ -111,7 +111,7 @@ TimedStructure buildTimed(const Geometries& geometries, ScalingAccel accel) {
   if (accel == ScalingAccel::Grid)
     s.grid = std::make_unique<Grid>(geometries);
   else
-    s.bvh = std::make_unique<Bvh>(geometries);
+    s.bvh = std::make_unique<WideBvh>(geometries);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return s;
 }

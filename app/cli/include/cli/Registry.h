@@ -15,7 +15,7 @@
 ///                       mini1_glossy (jittered, lens, adaptive)   mini1, mini2
 ///     render            stage04_camera (rows, calling thread)     stage04 .. mini1
 ///                       mini2_bvh (tiles on a pool of threads)    mini2
-///     makeAccelerator   mini2_bvh (none, cbr, bvh, grid)          mini2 (before it: none)
+///     makeAccelerator   mini2_bvh (none, cbr, bvh[4], grid)       mini2 (before it: none)
 ///
 /// Two parts of one stage supplying the same piece are refused (std::logic_error), and so is a
 /// stage that is not one of the course's (the root CMakeLists.txt's RT_STAGES, in their order).

@@ -1,5 +1,5 @@
 // What rt knows of mini project 2: the acceleration structure a render asks for (render.accel,
-// --accel: none, cbr, bvh or grid), built once over the scene's shapes before any ray, the render
+// --accel: none, cbr, bvh, bvh4 or grid), built once over the scene's shapes before any ray, the render
 // on a pool of threads handing out square tiles (render.threads, --threads; 0: every core),
 // `rt bench`, the timing table across stages and accelerations (mini2_bvh/Bench.cpp), and the
 // course's own benchmark scene, TeapotTest, with its later year's bubbles (scenes/Teapot.h).
@@ -93,8 +93,8 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
                 "N")
         ->transform(integerValidator(0, RenderOptions::MAX_THREADS));
     addOptional(command, "--accel", into.accel,
-                "none, cbr, bvh or grid (default: the scene's render.accel, bvh); the image is the "
-                "same, bit for bit",
+                "none, cbr, bvh, bvh4 or grid (default: the scene's render.accel, bvh4); the image "
+                "is the same, bit for bit",
                 "A")
         ->check([](const std::string& name) -> std::string {
           if (isAccelerationName(name)) return "";

@@ -36,7 +36,7 @@ struct RenderSettings {
   double adaptiveThreshold = 16;    ///< mini 1: the colour difference that splits a square
   int adaptiveDepth = 2;            ///< mini 1: the adaptive sampler's depth limit
   std::string beamDepth = "first";  ///< mini 1: beams at the "first" bounce or at "every" one
-  std::string accel = "bvh";        ///< mini 2: "none", "cbr", "bvh" or "grid"
+  std::string accel = "bvh4";       ///< mini 2: "none", "cbr", "bvh", "bvh4" or "grid"
   int threads = 0;                  ///< mini 2: render threads; 0: every core
 
   bool operator==(const RenderSettings&) const = default;

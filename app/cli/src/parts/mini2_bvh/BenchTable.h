@@ -19,7 +19,7 @@ enum class TableFormat { Markdown, Csv, Json };
 struct BenchRow {
   std::string name;    ///< "no acceleration, 1 thread", ..., or the tracer's stage
   std::string tracer;  ///< a tracer's name (--tracer)
-  std::string accel;   ///< none, cbr, bvh or grid
+  std::string accel;   ///< none, cbr, bvh, bvh4 or grid
   int threads = 1;     ///< threads that rendered (never more than the image's tiles)
   double seconds = 0;  ///< wall time of the render: the median of the repeats
   RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
