@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -36,48 +38,29 @@ class Collapser {
             std::vector<WideBvh::Leaf>& leaves)
       : binary_(binary), wide_(wide), leaves_(leaves) {}
 
+  /// The wide nodes that collapsing the subtree of binary node `index` makes (a dry run, so
+  /// that the array is allocated once, at its size: no copy of it ever coexists with it).
+  std::size_t count(std::uint32_t index) const noexcept {
+    std::array<std::uint32_t, WIDTH> slots{};
+    const int used = slotsOf(index, slots);
+    std::size_t n = 1;
+    for (int k = 0; k < used; ++k)
+      if (!binary_[slots[k]].isLeaf()) n += count(slots[k]);
+    return n;
+  }
+
   /// Collapses the subtree of binary node `index` into wide nodes; returns the first one's index.
   std::uint32_t collapse(std::uint32_t index, int depth) {
     depth_ = std::max(depth_, depth);
-    // The slots, as binary node indices: start from the node's two children (or the node
-    // itself, a leaf at the root) and open the widest interior slot until four are full.
     std::array<std::uint32_t, WIDTH> slots{};
-    int used = 0;
-    const BvhNode& node = binary_[index];
-    if (node.isLeaf()) {
-      slots[used++] = index;
-    } else {
-      slots[used++] = index + 1;
-      slots[used++] = node.offset;
-    }
-    while (used < WIDTH) {
-      int widest = -1;
-      double widestArea = -1;
-      for (int k = 0; k < used; ++k) {
-        const BvhNode& s = binary_[slots[k]];
-        const double area = s.box.widen().surfaceArea();
-        if (!s.isLeaf() && area > widestArea) {
-          widest = k;
-          widestArea = area;
-        }
-      }
-      if (widest < 0) break;  // every slot is a leaf
-      // The opened slot's children take its place, in order: the slots stay in the binary
-      // tree's left-to-right order, the order of the top split's axis.
-      const std::uint32_t opened = slots[widest];
-      for (int k = used; k > widest + 1; --k) slots[k] = slots[k - 1];
-      slots[widest] = opened + 1;
-      slots[widest + 1] = binary_[opened].offset;
-      ++used;
-    }
-
+    const int used = slotsOf(index, slots);
     WideNode out;
     for (int a = 0; a < 3; ++a) {
       out.lo[a].fill(FLOAT_INF);
       out.hi[a].fill(-FLOAT_INF);
     }
     out.used = static_cast<std::uint8_t>(used);
-    out.axis = node.axis;
+    out.axis = binary_[index].axis;
     const auto at = static_cast<std::uint32_t>(wide_.size());
     wide_.emplace_back();
     for (int k = 0; k < used; ++k) {
@@ -104,6 +87,41 @@ class Collapser {
   int depth() const noexcept { return depth_; }
 
  private:
+  /// The slots of the wide node made from binary node `index`, as binary node indices: its two
+  /// children (or the node itself, a leaf at the root), then the widest interior slot opened
+  /// until four are full (or every slot is a leaf). Returns how many.
+  int slotsOf(std::uint32_t index, std::array<std::uint32_t, WIDTH>& slots) const noexcept {
+    int used = 0;
+    const BvhNode& node = binary_[index];
+    if (node.isLeaf()) {
+      slots[used++] = index;
+      return used;
+    }
+    slots[used++] = index + 1;
+    slots[used++] = node.offset;
+    while (used < WIDTH) {
+      int widest = -1;
+      double widestArea = -1;
+      for (int k = 0; k < used; ++k) {
+        const BvhNode& s = binary_[slots[k]];
+        const double area = s.box.widen().surfaceArea();
+        if (!s.isLeaf() && area > widestArea) {
+          widest = k;
+          widestArea = area;
+        }
+      }
+      if (widest < 0) break;  // every slot is a leaf
+      // The opened slot's children take its place, in order: the slots stay in the binary
+      // tree's left-to-right order, the order of the top split's axis.
+      const std::uint32_t opened = slots[widest];
+      for (int k = used; k > widest + 1; --k) slots[k] = slots[k - 1];
+      slots[widest] = opened + 1;
+      slots[widest + 1] = binary_[opened].offset;
+      ++used;
+    }
+    return used;
+  }
+
   std::span<const BvhNode> binary_;
   std::vector<WideNode>& wide_;
   std::vector<WideBvh::Leaf>& leaves_;
@@ -184,6 +202,19 @@ inline unsigned enteredSlots(const WideNode& node, const LaneRay& r, float limit
   return hits & ((1u << node.used) - 1);
 }
 
+/// node.child[k], through a branch per value of k: the next node's address then depends on a
+/// predicted branch, which the processor runs ahead of, rather than on the box test's result,
+/// which it would wait for (a bit scan's result used as an index is a data dependency). The
+/// empty asm statements keep the compiler from merging the four loads back into one.
+inline std::uint32_t childAt(const WideNode& node, int k) noexcept {
+  switch (k) {
+    case 0: asm("" ::: "memory"); return node.child[0];
+    case 1: asm("" ::: "memory"); return node.child[1];
+    case 2: asm("" ::: "memory"); return node.child[2];
+    default: asm("" ::: "memory"); return node.child[3];
+  }
+}
+
 /// A pending slot of the walk: 8 bytes, written and read whole (two smaller stores read back by
 /// one load would stall the store-to-load forwarding of the processor).
 struct Pending {
@@ -195,17 +226,17 @@ struct Pending {
 
 WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options) : binary_(primitives, options) {
   if (binary_.nodes_.empty()) return;
-  // A wide node holds at least one binary interior node (or the one leaf of a one-leaf tree).
-  nodes_.reserve(binary_.nodes_.size() / 2 + 1);
-  // A binary tree of n nodes has (n + 1) / 2 leaves.
-  leaves_.reserve((binary_.nodes_.size() + 1) / 2);
+  // A binary tree of n nodes has (n + 1) / 2 leaves; a leaf's index must fit below LEAF.
+  const std::size_t leafCount = (binary_.nodes_.size() + 1) / 2;
+  if (leafCount >= WideNode::LEAF)
+    throw std::length_error("WideBvh: " + std::to_string(leafCount) +
+                            " leaves, more than the wide nodes can number (2^31 - 1)");
   Collapser collapser(binary_.nodes_, nodes_, leaves_);
+  nodes_.reserve(collapser.count(0));
+  leaves_.reserve(leafCount);
   collapser.collapse(0, 0);
   depth_ = collapser.depth();
-  nodes_.shrink_to_fit();
   std::vector<BvhNode>().swap(binary_.nodes_);
-  // Slot k's leaf must fit the bit below LEAF: at most one leaf per primitive, < 2^32.
-  static_assert(Geometries::MAX_PRIMITIVES / Bvh::MAX_LEAF_SIZE < WideNode::LEAF);
 }
 
 std::span<const std::uint32_t> WideBvh::leafShapes(const WideNode& node, int slot) const noexcept {
@@ -255,7 +286,7 @@ std::optional<Hit> WideBvh::closestHit(const Ray& ray, double tMax,
           int k = __builtin_ctz(hits);
           hits &= hits - 1;
           if (hits == 0) {  // one slot entered, the most common case: straight on
-            current = node.child[k];
+            current = childAt(node, k);
             continue;
           }
           // Several: push them so that the nearest along the node's top split axis comes off
@@ -320,7 +351,7 @@ bool WideBvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCou
         std::array<float, WIDTH> entry;
         unsigned hits = enteredSlots(node, lanes, limitF, entry);
         if (hits != 0) {
-          current = node.child[__builtin_ctz(hits)];
+          current = childAt(node, __builtin_ctz(hits));
           for (hits &= hits - 1; hits != 0; hits &= hits - 1)
             stack[top++] = node.child[__builtin_ctz(hits)];
           continue;
