@@ -9,13 +9,14 @@
 #include "bvh/WideBvh.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
 #include "bvh/FloatRay.h"
@@ -208,10 +209,18 @@ inline unsigned enteredSlots(const WideNode& node, const LaneRay& r, float limit
 /// empty asm statements keep the compiler from merging the four loads back into one.
 inline std::uint32_t childAt(const WideNode& node, int k) noexcept {
   switch (k) {
-    case 0: asm("" ::: "memory"); return node.child[0];
-    case 1: asm("" ::: "memory"); return node.child[1];
-    case 2: asm("" ::: "memory"); return node.child[2];
-    default: asm("" ::: "memory"); return node.child[3];
+    case 0:
+      asm("" ::: "memory");
+      return node.child[0];
+    case 1:
+      asm("" ::: "memory");
+      return node.child[1];
+    case 2:
+      asm("" ::: "memory");
+      return node.child[2];
+    default:
+      asm("" ::: "memory");
+      return node.child[3];
   }
 }
 
@@ -371,6 +380,239 @@ bool WideBvh::forEachHit(const Ray& ray, double tMax, HitVisitor visit, QueryCou
   }
   addQueryCounts(counts, tests, visited);
   return complete;
+}
+
+// ---- Packets ----
+//
+// A packet holds up to PACKET rays as structure of arrays, one lane per ray, each lane its
+// FloatRay. A slot's box is tested against every lane at once: the lane's near bound is lo or
+// hi by its own direction's sign, chosen with and/andnot masks (SSE2 has no blend). The walk
+// carries, with each pending slot, the mask of the rays that entered it; a node's slot is
+// pushed with the rays of that mask that enter it too. A ray's limit shrinks with its own best
+// hit, so its lanes stop entering boxes behind it.
+
+namespace {
+
+constexpr int PACKET = WideBvh::PACKET;
+
+struct PacketLanes {
+  alignas(32) float originIn[3][PACKET];
+  alignas(32) float originOut[3][PACKET];
+  alignas(32) float invIn[3][PACKET];
+  alignas(32) float invOut[3][PACKET];
+  alignas(32) std::uint32_t negative[3][PACKET];  ///< all ones where the lane's ray runs down
+  alignas(32) float limit[PACKET];
+};
+
+#if defined(__SSE2__)
+/// The lanes of `active` whose ray enters slot k's box: two halves of four lanes.
+struct SlotTestSse2 {
+  static unsigned test(const WideNode& node, int k, const PacketLanes& p) noexcept {
+    unsigned hits = 0;
+    for (int h = 0; h < PACKET; h += 4) {
+      __m128 tNear = _mm_setzero_ps();
+      __m128 tFar = _mm_load_ps(p.limit + h);
+      for (int a = 0; a < 3; ++a) {
+        const __m128 lo = _mm_set1_ps(node.lo[a][k]);
+        const __m128 hi = _mm_set1_ps(node.hi[a][k]);
+        const __m128 down =
+            _mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(p.negative[a] + h)));
+        const __m128 nearB = _mm_or_ps(_mm_and_ps(down, hi), _mm_andnot_ps(down, lo));
+        const __m128 farB = _mm_or_ps(_mm_and_ps(down, lo), _mm_andnot_ps(down, hi));
+        const __m128 tIn = _mm_mul_ps(_mm_sub_ps(nearB, _mm_load_ps(p.originIn[a] + h)),
+                                      _mm_load_ps(p.invIn[a] + h));
+        const __m128 tOut = _mm_mul_ps(_mm_sub_ps(farB, _mm_load_ps(p.originOut[a] + h)),
+                                       _mm_load_ps(p.invOut[a] + h));
+        tNear = _mm_max_ps(tIn, tNear);
+        tFar = _mm_min_ps(tOut, tFar);
+      }
+      hits |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(tNear, tFar))) << h;
+    }
+    return hits;
+  }
+};
+
+/// The same test on eight lanes at once (compiled for AVX2, called only where the processor has
+/// it): the same operations lane by lane, so the same floats and the same mask.
+struct SlotTestAvx2 {
+  __attribute__((target("avx2"))) static unsigned test(const WideNode& node, int k,
+                                                       const PacketLanes& p) noexcept {
+    __m256 tNear = _mm256_setzero_ps();
+    __m256 tFar = _mm256_load_ps(p.limit);
+    for (int a = 0; a < 3; ++a) {
+      const __m256 lo = _mm256_set1_ps(node.lo[a][k]);
+      const __m256 hi = _mm256_set1_ps(node.hi[a][k]);
+      const __m256 down =
+          _mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(p.negative[a])));
+      const __m256 nearB = _mm256_or_ps(_mm256_and_ps(down, hi), _mm256_andnot_ps(down, lo));
+      const __m256 farB = _mm256_or_ps(_mm256_and_ps(down, lo), _mm256_andnot_ps(down, hi));
+      const __m256 tIn = _mm256_mul_ps(_mm256_sub_ps(nearB, _mm256_load_ps(p.originIn[a])),
+                                       _mm256_load_ps(p.invIn[a]));
+      const __m256 tOut = _mm256_mul_ps(_mm256_sub_ps(farB, _mm256_load_ps(p.originOut[a])),
+                                        _mm256_load_ps(p.invOut[a]));
+      // maxps and minps return their second operand for a NaN, in 256 bits as in 128.
+      tNear = _mm256_max_ps(tIn, tNear);
+      tFar = _mm256_min_ps(tOut, tFar);
+    }
+    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(tNear, tFar, _CMP_LE_OS)));
+  }
+};
+#else
+/// Other processors: the lanes one by one, the same floats.
+struct SlotTestSse2 {
+  static unsigned test(const WideNode& node, int k, const PacketLanes& p) noexcept {
+    unsigned hits = 0;
+    for (int lane = 0; lane < PACKET; ++lane) {
+      float tNear = 0, tFar = p.limit[lane];
+      for (int a = 0; a < 3; ++a) {
+        const bool down = p.negative[a][lane] != 0;
+        const float nearB = down ? node.hi[a][k] : node.lo[a][k];
+        const float farB = down ? node.lo[a][k] : node.hi[a][k];
+        const float tIn = (nearB - p.originIn[a][lane]) * p.invIn[a][lane];
+        const float tOut = (farB - p.originOut[a][lane]) * p.invOut[a][lane];
+        tNear = tIn > tNear ? tIn : tNear;
+        tFar = tOut < tFar ? tOut : tFar;
+      }
+      if (tNear <= tFar) hits |= 1u << lane;
+    }
+    return hits;
+  }
+};
+using SlotTestAvx2 = SlotTestSse2;
+#endif
+
+/// A pending slot of a packet's walk, with the lanes that entered it and where its box is (so
+/// that a leaf's box is tested again, with the lanes' limits of the moment, before its exact
+/// tests: a lane may have found a nearer hit since the slot was pushed).
+struct PendingLanes {
+  std::uint32_t ref;
+  std::uint32_t lanes;
+  std::uint32_t parent;  ///< the node whose slot it is
+  std::uint32_t slot;
+};
+
+}  // namespace
+
+WideBvh::Simd WideBvh::bestSimd() noexcept {
+#if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+  static const Simd best = __builtin_cpu_supports("avx2") ? Simd::Avx2 : Simd::Sse2;
+  return best;
+#else
+  return Simd::Sse2;
+#endif
+}
+
+template <typename SlotTest>
+void WideBvh::tracePacket(std::span<const Ray> rays, double tMax,
+                          std::span<std::optional<Hit>> hits, QueryCounts* counts) const noexcept {
+  const auto n = static_cast<int>(rays.size());
+  const double limit = slabLimit(tMax);
+  // NearestHit has no default state: the packet's are made in place, one per lane used.
+  alignas(NearestHit) unsigned char storage[PACKET * sizeof(NearestHit)];
+  NearestHit* nearest = reinterpret_cast<NearestHit*>(storage);
+  std::uint64_t tests = 0, visited = 0;
+  PacketLanes p;
+  for (int lane = 0; lane < PACKET; ++lane) {
+    new (&nearest[lane]) NearestHit(tMax);
+    const bool used = lane < n;
+    const FloatRay r(used ? rays[lane] : rays[0]);
+    for (int a = 0; a < 3; ++a) {
+      p.originIn[a][lane] = r.originIn[a];
+      p.originOut[a][lane] = r.originOut[a];
+      p.invIn[a][lane] = r.invIn[a];
+      p.invOut[a][lane] = r.invOut[a];
+      p.negative[a][lane] = r.negative[a] ? ~0u : 0u;
+    }
+    if (used) {
+      tests += offerUnbounded(binary_.unbounded_, binary_.primitives_, rays[lane], nearest[lane]);
+      p.limit[lane] = floatLimit(std::min(limit, nearest[lane].t()));
+    } else {
+      p.limit[lane] = -FLOAT_INF;  // an unused lane enters nothing
+    }
+  }
+  const std::uint32_t all = (1u << n) - 1;
+  if (!nodes_.empty()) {
+    PendingLanes stack[STACK_SIZE];
+    int top = 0;
+    PendingLanes current{0, all, 0, 0};
+    for (;;) {
+      if ((current.ref & WideNode::LEAF) == 0) {
+        const WideNode& node = nodes_[current.ref];
+        visited += static_cast<unsigned>(std::popcount(current.lanes));
+        std::array<std::uint32_t, WIDTH> entered{};
+        unsigned slots = 0;
+        for (int k = 0; k < node.used; ++k) {
+          entered[k] = SlotTest::test(node, k, p) & current.lanes;
+          if (entered[k] != 0) slots |= 1u << k;
+        }
+        if (slots != 0) {
+          // Nearest first along the node's axis, for the direction of the packet's first ray.
+          const int first = __builtin_ctz(current.lanes);
+          const bool down = p.negative[node.axis][first] != 0;
+          // Push all but the one walked next: the lowest slot going up, the highest going down.
+          const int next = down ? 31 - __builtin_clz(slots) : __builtin_ctz(slots);
+          slots &= ~(1u << next);
+          while (slots != 0) {
+            const int k = down ? __builtin_ctz(slots) : 31 - __builtin_clz(slots);
+            slots &= ~(1u << k);
+            stack[top++] =
+                PendingLanes{node.child[k], entered[k], current.ref, static_cast<std::uint32_t>(k)};
+          }
+          current = PendingLanes{node.child[next], entered[next], current.ref,
+                                 static_cast<std::uint32_t>(next)};
+          continue;
+        }
+      } else {
+        const Leaf& leaf = leaves_[current.ref & ~WideNode::LEAF];
+        const std::uint32_t still =
+            current.lanes &
+            SlotTest::test(nodes_[current.parent], static_cast<int>(current.slot), p);
+        for (std::uint32_t lanes = still; lanes != 0; lanes &= lanes - 1) {
+          const int lane = __builtin_ctz(lanes);
+          tests += leaf.count;
+          binary_.forEachPrimitive(asBinaryLeaf(leaf), rays[lane],
+                                   [&](const Roots& roots, std::uint32_t shape) {
+                                     nearest[lane].offer(roots, shape);
+                                     return true;
+                                   });
+          p.limit[lane] = floatLimit(std::min(limit, nearest[lane].t()));
+        }
+      }
+      if (top == 0) break;
+      current = stack[--top];
+    }
+  }
+  for (int lane = 0; lane < n; ++lane) hits[lane] = nearest[lane].hit();
+  addQueryCounts(counts, tests, visited);
+}
+
+void WideBvh::tracePacketSse2(std::span<const Ray> rays, double tMax,
+                              std::span<std::optional<Hit>> hits,
+                              QueryCounts* counts) const noexcept {
+  tracePacket<SlotTestSse2>(rays, tMax, hits, counts);
+}
+
+// Compiled for AVX2 as a whole, so that the walk, the box tests and the leaves' exact tests
+// inline into one function (the exact tests' double arithmetic is IEEE in AVX registers too;
+// AVX2 does not bring FMA, so nothing is fused).
+__attribute__((target("avx2"))) void WideBvh::tracePacketAvx2(std::span<const Ray> rays,
+                                                              double tMax,
+                                                              std::span<std::optional<Hit>> hits,
+                                                              QueryCounts* counts) const noexcept {
+  tracePacket<SlotTestAvx2>(rays, tMax, hits, counts);
+}
+
+void WideBvh::closestHits(std::span<const Ray> rays, double tMax,
+                          std::span<std::optional<Hit>> hits, QueryCounts* counts,
+                          Simd simd) const noexcept {
+  const bool avx2 = simd == Simd::Avx2 && bestSimd() == Simd::Avx2;
+  for (std::size_t i = 0; i < rays.size(); i += PACKET) {
+    const std::size_t n = std::min<std::size_t>(PACKET, rays.size() - i);
+    if (avx2)
+      tracePacketAvx2(rays.subspan(i, n), tMax, hits.subspan(i, n), counts);
+    else
+      tracePacketSse2(rays.subspan(i, n), tMax, hits.subspan(i, n), counts);
+  }
 }
 
 }  // namespace rt

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "bvh/Bvh.h"
@@ -16,7 +18,9 @@
 #include "bvh/SlabRay.h"
 #include "bvh/WideBvh.h"
 #include "camera/Camera.h"
+#include "geometries/UtahTeapot.h"
 #include "glossy/Galaxy.h"
+#include "support/AllocationCounter.h"
 
 #include "RandomScenes.h"
 
@@ -290,6 +294,105 @@ TEST(WideBvhTests, fewerNodesPerRay) {
   EXPECT_LT(3 * wideClosest.nodesVisited, binaryClosest.nodesVisited);
   RecordProperty("binary closest nodes", std::to_string(binaryClosest.nodesVisited));
   RecordProperty("wide closest nodes", std::to_string(wideClosest.nodesVisited));
+}
+
+}  // namespace
+}  // namespace rt
+
+namespace rt {
+namespace {
+
+/// Every query of a scene traced as packets (the queries grouped in runs of 1 to 19 rays) with
+/// the given instruction set: the same hits, bit for bit, as closestHit one ray at a time.
+void expectPacketsAnswerAsOne(const Geometries& scene, const std::vector<test::Query>& queries,
+                              WideBvh::Simd simd, double tMax) {
+  const WideBvh wide(scene);
+  std::vector<Ray> rays;
+  for (const test::Query& q : queries) rays.push_back(q.ray);
+  std::vector<std::optional<Hit>> hits(rays.size());
+  std::size_t at = 0;
+  for (std::size_t run = 1; at < rays.size(); run = run % 19 + 1) {
+    const std::size_t n = std::min(run, rays.size() - at);
+    wide.closestHits(std::span(rays).subspan(at, n), tMax, std::span(hits).subspan(at, n), nullptr,
+                     simd);
+    at += n;
+  }
+  int differences = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const std::optional<Hit> one = wide.closestHit(rays[i], tMax);
+    const bool same = one.has_value() == hits[i].has_value() &&
+                      (!one || (one->t == hits[i]->t && one->geometry == hits[i]->geometry));
+    if (!same && ++differences <= 3) ADD_FAILURE() << "ray " << i;
+  }
+  EXPECT_EQ(differences, 0);
+}
+
+TEST(WideBvhTests, packetsAnswerAsSingleRays) {
+  const Aabb box(Double3(-30), Double3(30));
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: every bounded kind, planes and tubes, copies (exact ties), a mesh; rays of every kind
+  // (from outside, inside, along axes, parallel to planes, from grid points) with both
+  // instruction sets and an infinite and a finite tMax. The AVX2 lanes are asked for on every
+  // machine: where the processor lacks AVX2, closestHits runs the SSE2 lanes instead.
+  test::Random random(61);
+  Geometries scene;
+  test::addMixedShapes(scene, random, 700, box);
+  test::addUnbounded(scene, box);
+  test::addCopies(scene, random, 100);
+  scene.addMesh(test::movedMesh(utahTeapot(5), Double3(2, 0, -1)));
+  const std::vector<test::Query> queries = test::randomQueries(random, 3000, box);
+  for (const WideBvh::Simd simd : {WideBvh::Simd::Sse2, WideBvh::Simd::Avx2}) {
+    SCOPED_TRACE(simd == WideBvh::Simd::Sse2 ? "SSE2" : "AVX2");
+    expectPacketsAnswerAsOne(scene, queries, simd, INFINITE_DISTANCE);
+    expectPacketsAnswerAsOne(scene, queries, simd, 25);
+  }
+  // TC02: a beam: 80 rays from one point of the galaxy's glass, as mini 1 casts them
+  const GalaxySetup g = galaxy(GalaxyParams{.diffusion = false});
+  const WideBvh wide(g.scene.geometries);
+  std::vector<Ray> beam;
+  const Point from(4, 8, 25);
+  for (int i = 0; i < 80; ++i)
+    beam.emplace_back(from, Vector(Double3(0.02 * (i % 9 - 4), 0.02 * (i / 9 - 4), -1)));
+  std::vector<std::optional<Hit>> hits(beam.size());
+  QueryCounts packet, single;
+  wide.closestHits(beam, INFINITE_DISTANCE, hits, &packet);
+  for (std::size_t i = 0; i < beam.size(); ++i) {
+    const auto one = wide.closestHit(beam[i], INFINITE_DISTANCE, &single);
+    ASSERT_EQ(one.has_value(), hits[i].has_value()) << i;
+    if (one) {
+      EXPECT_TRUE(one->t == hits[i]->t && one->geometry == hits[i]->geometry) << i;
+    }
+  }
+  // The beam looks into the glass box from the front: every ray hits it.
+  EXPECT_EQ(std::count_if(hits.begin(), hits.end(), [](const auto& h) { return h.has_value(); }),
+            80);
+  EXPECT_GT(packet.nodesVisited, 0u);
+  // =============== Boundary Values Tests ==================
+  // TC11: no ray; one ray; an empty scene (no tree)
+  wide.closestHits({}, INFINITE_DISTANCE, {});
+  std::optional<Hit> one;
+  wide.closestHits(std::span(beam).first(1), INFINITE_DISTANCE, std::span(&one, 1));
+  EXPECT_EQ(one.has_value(), hits[0].has_value());
+  const Geometries empty;
+  const WideBvh none(empty);
+  none.closestHits(std::span(beam).first(3), INFINITE_DISTANCE, std::span(hits).first(3));
+  EXPECT_FALSE(hits[0] || hits[1] || hits[2]);
+}
+
+TEST(WideBvhTests, packetsAllocateNothing) {
+  test::Random random(62);
+  const Aabb box(Double3(-30), Double3(30));
+  Geometries scene;
+  test::addMixedShapes(scene, random, 300, box);
+  const WideBvh wide(scene);
+  std::vector<Ray> rays;
+  for (const test::Query& q : test::randomQueries(random, 200, box)) rays.push_back(q.ray);
+  std::vector<std::optional<Hit>> hits(rays.size());
+  const long allocations = testing::allocationsDuring([&] {
+    for (const WideBvh::Simd simd : {WideBvh::Simd::Sse2, WideBvh::Simd::Avx2})
+      wide.closestHits(rays, INFINITE_DISTANCE, hits, nullptr, simd);
+  });
+  EXPECT_EQ(allocations, 0);
 }
 
 }  // namespace

@@ -96,6 +96,29 @@ class WideBvh final : public Intersectable {
   bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                   QueryCounts* counts = nullptr) const override;
 
+  // ---- Packets: rays traced together ----
+
+  /// The rays closestHits traces together: one lane each of an AVX register (or of two SSE ones).
+  static constexpr int PACKET = 8;
+  /// The instruction set of the packets' box tests. Both compute the same floats lane by lane
+  /// (the same IEEE operations, none fused), so the answers are the same bits: only the speed
+  /// differs.
+  enum class Simd {
+    Sse2,  ///< the x86-64 baseline (or plain C++ elsewhere): two 4-lane halves
+    Avx2,  ///< 8 lanes at once, chosen at run time where the processor has AVX2
+  };
+  /// Avx2 when this build and processor have it, else Sse2.
+  static Simd bestSimd() noexcept;
+
+  /// closestHit of each ray, hits[i] for rays[i] (hits.size() == rays.size()), the rays traced
+  /// together PACKET at a time: a node is fetched once for the packet and each slot's box tested
+  /// against every ray of it in one go. The answers are closestHit's, bit for bit. Counts add one
+  /// node visit per ray that tests a node's boxes, and the exact tests made (a packet may test a
+  /// leaf for a ray that has since found a nearer hit, so these can exceed closestHit's).
+  /// Allocates nothing.
+  void closestHits(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
+                   QueryCounts* counts = nullptr, Simd simd = bestSimd()) const noexcept;
+
   // ---- Inspection: for the tests, the benchmark and the README ----
 
   /// The wide nodes, root first; empty when no primitive is bounded.
@@ -120,6 +143,14 @@ class WideBvh final : public Intersectable {
   std::size_t memoryBytes() const noexcept;
 
  private:
+  template <typename SlotTest>
+  void tracePacket(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
+                   QueryCounts* counts) const noexcept;
+  void tracePacketSse2(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
+                       QueryCounts* counts) const noexcept;
+  void tracePacketAvx2(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
+                       QueryCounts* counts) const noexcept;
+
   /// The binary tree whose leaves (primitive arrays) the wide nodes reference; its own nodes
   /// are freed once collapsed.
   Bvh binary_;
