@@ -1,14 +1,15 @@
 // mini2_bvh_picture: the galaxy seen from straight above, with the boxes of its BVH drawn over
 // it, one colour per depth: the picture of mini2_bvh/README.md.
 //
-//   build/release/bin/mini2_bvh_picture [OUT.png] [--depth D] [--width W]
+//   build/release/bin/mini2_bvh_picture [OUT.png] [--depth D] [--width W] [--wide]
 //
 // The scene is rendered by the Whitted tracer through the BVH (the stars show through the glass
 // lid), then the boxes of the nodes at depth D (the root is depth 0) and of the leaves above it
 // are projected through the same camera and their twelve edges drawn as one-pixel lines, in a
 // colour per depth from red (the root) to violet (the deepest leaves). Without --depth, every
 // leaf: the finest partition of the scene. Default OUT: docs/images/bvh-boxes.png (run it from
-// the repository root), W 960 (the height follows the view's 16:9).
+// the repository root), W 960 (the height follows the view's 16:9). --wide: the wide BVH's
+// slots instead (WideBvh.h), D counted in wide nodes.
 
 #include <array>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "bvh/Bvh.h"
+#include "bvh/WideBvh.h"
 #include "camera/Camera.h"
 #include "camera/ImageWriter.h"
 #include "camera/RenderBlock.h"
@@ -97,12 +99,43 @@ void drawBox(Image& image, const Projector& projector, const Aabb& box, const Co
     }
 }
 
+/// --wide: the wide BVH's slots instead, a wide node's slots at depth d (the root's at 0) drawn
+/// in the colour of d, down to maxDepth (every level when negative), the leaves above it too.
+int drawWide(const GalaxySetup& g, Camera& camera, const Projector& projector,
+             const std::string& out, int maxDepth) {
+  const WideBvh wide(g.scene.geometries);
+  if (maxDepth < 0) maxDepth = wide.depth();
+  std::vector<std::pair<std::uint32_t, int>> stack{{0, 0}};
+  int drawn = 0;
+  while (!stack.empty()) {
+    const auto [index, depth] = stack.back();
+    stack.pop_back();
+    const WideNode& node = wide.nodes()[index];
+    for (int k = 0; k < node.used; ++k) {
+      const bool interior = node.kind[k] == WideNode::Kind::Interior;
+      if (!interior || depth == maxDepth) {
+        drawBox(camera.image(), projector, node.box(k).widen(), depthColour(depth, wide.depth()));
+        ++drawn;
+      } else {
+        stack.push_back({node.child[k], depth + 1});
+      }
+    }
+  }
+  PngImageWriter().write(camera.image(), out);
+  std::printf("mini2_bvh_picture: %s: %d slots (wide depth 0..%d) of %zu wide nodes, depth %d\n",
+              out.c_str(), drawn, maxDepth, wide.nodes().size(), wide.depth());
+  return 0;
+}
+
 int run(int argc, char** argv) {
   std::string out = "docs/images/bvh-boxes.png";
   int maxDepth = -1, width = 960;  // -1: every leaf
+  bool wideTree = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if ((a == "--depth" || a == "--width") && i + 1 < argc) {
+    if (a == "--wide") {
+      wideTree = true;
+    } else if ((a == "--depth" || a == "--width") && i + 1 < argc) {
       const int v = std::atoi(argv[++i]);
       if (a == "--depth" && v >= 0 && v <= Bvh::SAH_MAX_DEPTH) {
         maxDepth = v;
@@ -116,7 +149,7 @@ int run(int argc, char** argv) {
     } else if (!a.starts_with("-")) {
       out = a;
     } else {
-      std::fprintf(stderr, "usage: mini2_bvh_picture [OUT.png] [--depth D] [--width W]\n");
+      std::fprintf(stderr, "usage: mini2_bvh_picture [OUT.png] [--depth D] [--width W] [--wide]\n");
       return 2;
     }
   }
@@ -137,9 +170,10 @@ int run(int argc, char** argv) {
   const WhittedTracer tracer(g.scene, &bvh);
   renderBlock({camera, tracer, CenterSampler{}}, {0, 0, view.nX, view.nY}, camera.image());
 
+  const Projector projector{camera};
+  if (wideTree) return drawWide(g, camera, projector, out, maxDepth);
   // Depth-first over the flat array: a node's first child is the next node.
   if (maxDepth < 0) maxDepth = bvh.depth();
-  const Projector projector{camera};
   std::vector<std::pair<std::uint32_t, int>> stack{{0, 0}};
   int drawn = 0;
   while (!stack.empty()) {
