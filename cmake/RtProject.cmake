@@ -8,6 +8,16 @@ set(CMAKE_CXX_EXTENSIONS OFF)  # -std=c++20, not gnu++20
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   target_compile_options(rt_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                               -Wno-sign-conversion)
+  # Portable images: a multiply and an add are never fused into one FMA (which rounds once
+  # instead of twice), whatever processor the compiler targets, so an image has the same bits
+  # from every build. The default build targets x86-64's baseline (SSE2): the wide BVH's AVX2
+  # code is chosen at run time, and computes the same floats (mini2_bvh/README.md).
+  target_compile_options(rt_options INTERFACE -ffp-contract=off)
+endif()
+if(CMAKE_CXX_FLAGS MATCHES "-march=native|-mtune=native")
+  message(WARNING "CMAKE_CXX_FLAGS has -march=native: the binaries run only on processors like "
+                  "this one (the images keep their bits: -ffp-contract=off). The project needs no "
+                  "such flag; its AVX2 code is chosen at run time.")
 endif()
 # GCC 12 reports a false -Wrestrict inside libstdc++ for "literal" + std::string (GCC bug
 # 105651, fixed in GCC 13); the warning says nothing about our code there.
