@@ -14,8 +14,8 @@ if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   # code is chosen at run time, and computes the same floats (mini2_bvh/README.md).
   target_compile_options(rt_options INTERFACE -ffp-contract=off)
 endif()
-if(CMAKE_CXX_FLAGS MATCHES "-march=native|-mtune=native")
-  message(WARNING "CMAKE_CXX_FLAGS has -march=native: the binaries run only on processors like "
+if(CMAKE_CXX_FLAGS MATCHES "-m(arch|tune)=native")
+  message(WARNING "CMAKE_CXX_FLAGS targets this machine's processor: the binaries run only on processors like "
                   "this one (the images keep their bits: -ffp-contract=off). The project needs no "
                   "such flag; its AVX2 code is chosen at run time.")
 endif()
