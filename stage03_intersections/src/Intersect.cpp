@@ -57,7 +57,8 @@ bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
   int sign = 0;
   Double3 vi = vertices[0].xyz() - p0;
   for (std::size_t i = 0; i < n; ++i) {
-    const Double3 vNext = vertices[(i + 1) % n].xyz() - p0;
+    const std::size_t next = i + 1 == n ? 0 : i + 1;  // the last edge closes the boundary
+    const Double3 vNext = vertices[next].xyz() - p0;
     const Double3 ni = vi.cross(vNext);
     const double s = dir.dot(ni);
     // isZero(dir·normalize(ni)) without the square root: s² < threshold²·|ni|².
