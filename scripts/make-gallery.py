@@ -20,10 +20,16 @@ then too; 2 for bad usage or a timing file that does not follow the schema below
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
-   "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh|grid", "threads": N,
-             "seconds": S, "primary": P, "secondary": Q, "shadow": R, "raysPerSecond": X,
-             "nodesPerRay": Y, "speedup": Z, "referenceSeconds": null or a number}]}
-  (the reference report's time for the row).
+   "rows": [{"name": "...", "tracer": "...", "accel": "none|cbr|bvh|bvh4|grid|embree",
+             "threads": N, "seconds": S, "primary": P, "secondary": Q, "shadow": R,
+             "raysPerSecond": X, "nodesPerRay": Y, "speedup": Z,
+             "referenceSeconds": null or a number, "pixelsDiffering": null or a count,
+             "note": "..."}]}
+  (the reference report's time for the row; the pixels whose colour differs from the first
+  row's image). A row that was not rendered (Embree 3 in a build without Embree) has null for
+  its figures, S to Z, and a note saying why: it is left out of the charts and shown in the
+  table with its note; a row whose structure does not count nodes (Embree) has null for Y.
+  pixelsDiffering and note may be missing (files written before they were).
 
 --root is the repository (default: this script's); the page's links, images and style sheet
 (docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
@@ -55,6 +61,10 @@ THUMBNAIL = 240  # the width of an image on the page, in CSS pixels
 ROW_KEYS = {"name": str, "tracer": str, "accel": str, "threads": int, "seconds": (int, float),
             "primary": int, "secondary": int, "shadow": int, "raysPerSecond": (int, float),
             "nodesPerRay": (int, float), "speedup": (int, float)}
+# The figures a row that was not rendered has as null (nodesPerRay: also a structure that does
+# not count its nodes).
+NULLABLE = {"seconds", "primary", "secondary", "shadow", "raysPerSecond", "nodesPerRay",
+            "speedup"}
 
 
 class BadInput(Exception):
@@ -160,6 +170,8 @@ def read_bench(path: Path) -> dict:
             raise BadInput(f"{path}: rows[{i}]: expected an object")
         for key, kind in ROW_KEYS.items():
             value = row.get(key)
+            if value is None and key in NULLABLE and key in row:
+                continue
             if not isinstance(value, kind) or isinstance(value, bool):
                 raise BadInput(f"{path}: rows[{i}].{key}: expected "
                                f"{'a number' if isinstance(kind, tuple) else kind.__name__}, "
@@ -168,6 +180,13 @@ def read_bench(path: Path) -> dict:
         if value is not None and (not isinstance(value, (int, float)) or isinstance(value, bool)):
             raise BadInput(f"{path}: rows[{i}].referenceSeconds: expected null or a number, "
                            f"got {value!r}")
+        value = row.get("pixelsDiffering")
+        if value is not None and (not isinstance(value, int) or isinstance(value, bool)
+                                  or value < 0):
+            raise BadInput(f"{path}: rows[{i}].pixelsDiffering: expected null or a count >= 0, "
+                           f"got {value!r}")
+        if not isinstance(row.get("note", ""), str):
+            raise BadInput(f"{path}: rows[{i}].note: expected str, got {row.get('note')!r}")
         for key in ("seconds", "referenceSeconds"):
             value = row.get(key)
             if value is not None and not (math.isfinite(value) and value >= 0):
@@ -279,9 +298,9 @@ def rate_chart(plt, bench: dict, rows: list[dict]) -> str:
 def timing_charts(bench: dict) -> list[str]:
     """The charts of the timing: the reference report's rows, then the other rows."""
     plt = matplotlib_pyplot()
-    rows = bench["rows"]
+    rows = [r for r in bench["rows"] if r["seconds"] is not None]  # rendered rows only
     timed = [r for r in rows if reference_seconds(r) is not None]
-    others = [r for r in rows if reference_seconds(r) is None]
+    others = [r for r in rows if reference_seconds(r) is None and r["raysPerSecond"] is not None]
     out = []
     if timed:
         out.append(f"<p>The reference report's rows: {bench['scene']} at "
@@ -299,22 +318,34 @@ def timing_charts(bench: dict) -> list[str]:
 def timing_table(bench: dict) -> str:
     head = ("name", "tracer", "acceleration", "threads", "time", "primary rays",
             "secondary rays", "shadow rays", "rays/s", "nodes/ray", "speed-up",
-            "the reference report")
+            "the reference report", "pixels differing", "note")
     first = bench["rows"][0] if bench["rows"] else None
     out = ['<div class="table"><table><thead><tr>' +
            "".join(f"<th>{h}</th>" for h in head) + "</tr></thead><tbody>"]
     for r in bench["rows"]:
         reference = reference_seconds(r)
-        speedup = f'{significant(r["speedup"])}\u00d7' if same_work(r, first) else "—"
+        speedup = (f'{significant(r["speedup"])}\u00d7'
+                   if r["speedup"] is not None and same_work(r, first) else "—")
+
+        def shown(value, form) -> str:
+            return "—" if value is None else form(value)
+        pixels = r.get("pixelsDiffering")
         cells = (html.escape(r["name"]), html.escape(r["tracer"]), html.escape(r["accel"]),
-                 str(r["threads"]), format_seconds(r["seconds"]), format_number(r["primary"]),
-                 format_number(r["secondary"]), format_number(r["shadow"]),
-                 format_rate(r["raysPerSecond"]), significant(r["nodesPerRay"]), speedup,
-                 format_seconds(reference) if reference is not None else "—")
+                 str(r["threads"]), shown(r["seconds"], format_seconds),
+                 shown(r["primary"], format_number), shown(r["secondary"], format_number),
+                 shown(r["shadow"], format_number), shown(r["raysPerSecond"], format_rate),
+                 shown(r["nodesPerRay"], significant), speedup,
+                 format_seconds(reference) if reference is not None else "—",
+                 shown(pixels, format_number), html.escape(r.get("note", "")))
         out.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     out.append("</tbody></table></div>")
     out.append("<p>The speed-up is the first row's time over the row's, shown where the row "
-               "traces the same rays as the first (—: other work).</p>")
+               "traces the same rays as the first (—: other work). Pixels differing: from the "
+               "first row's image, for the rows of its tracer; the project's structures differ "
+               "in none. Embree tests its boxes and its spheres, triangles and quads in float: "
+               "a ray that grazes a shape's edge can miss it there, where the exact test hits "
+               "it; every hit Embree offers is checked and ordered by the project's exact test, "
+               "so only such rays can change a pixel.</p>")
     return "\n".join(out)
 
 

@@ -34,14 +34,30 @@ using test::run;
 const std::vector<std::string> STAGE_TRACERS{"ambient", "phong", "shadow", "whitted", "beams"};
 
 /// The rows' names in the documented order: the reference report's four, the wide BVH's and the
-/// grid's, then one per stage's tracer, named by its stage.
+/// grid's, Embree's (rendered or not, as the build has Embree), then one per stage's tracer,
+/// named by its stage.
 std::vector<std::string> expectedNames() {
   std::vector<std::string> names{"no acceleration",    "threads",
                                  "threads + CBR",      "threads + CBR + BVH",
-                                 "threads + wide BVH", "threads + grid"};
+                                 "threads + wide BVH", "threads + grid",
+                                 "Embree 3"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   return names;
 }
+
+/// Whether this build has Embree (RT_HAVE_EMBREE, from rt_embree): its row is rendered or not.
+#if RT_HAVE_EMBREE
+constexpr bool HAVE_EMBREE = true;
+#else
+constexpr bool HAVE_EMBREE = false;
+#endif
+
+/// The row "Embree 3" and the first stage's tracer's row, in the report's rows.
+constexpr std::size_t EMBREE = 6, FIRST_STAGE = 7;
+
+/// The note of the row "Embree 3" in a build without Embree.
+const std::string NOT_BUILT =
+    "not built: install libembree-dev (scripts/deps.sh --embree) and reconfigure";
 
 int cores() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
@@ -64,8 +80,9 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   const std::vector<std::string> names = expectedNames();
   ASSERT_EQ(rows.size(), names.size());
   const std::vector<std::string> keys{
-      "name",      "tracer", "accel",         "threads",     "seconds", "primary",
-      "secondary", "shadow", "raysPerSecond", "nodesPerRay", "speedup", "referenceSeconds"};
+      "name",      "tracer",           "accel",           "threads",     "seconds",
+      "primary",   "secondary",        "shadow",          "raysPerSecond", "nodesPerRay",
+      "speedup",   "referenceSeconds", "pixelsDiffering", "note"};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::vector<std::string> got;
     for (const auto& [key, value] : rows[i].items()) got.push_back(key);
@@ -82,16 +99,24 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_EQ(rows[i]["tracer"], "beams") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
   }
+  // TC03b: then Embree's row, with the same tracer, its accel "embree"
+  EXPECT_EQ(rows[EMBREE]["tracer"], "beams");
+  EXPECT_EQ(rows[EMBREE]["accel"], "embree");
   // TC04: then every stage's tracer, in the course's order, through the default BVH, the wide
   // one (not the debugging views rays, normals and hits)
-  for (std::size_t i = 6; i < rows.size(); ++i) {
-    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 6]) << i;
+  for (std::size_t i = FIRST_STAGE; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - FIRST_STAGE]) << i;
     EXPECT_EQ(rows[i]["accel"], "bvh4") << i;
   }
-  // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles)
-  for (const json& row : rows) EXPECT_EQ(row["threads"], 1) << row["name"];
-  // TC06: one camera ray per pixel in every row
-  for (const json& row : rows) EXPECT_EQ(row["primary"], 144) << row["name"];
+  // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles);
+  // the row not rendered keeps the threads asked for
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    EXPECT_EQ(rows[i]["threads"], i == EMBREE && !HAVE_EMBREE ? cores() : 1) << i;
+  // TC06: one camera ray per pixel in every row rendered
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (i != EMBREE || HAVE_EMBREE) {
+      EXPECT_EQ(rows[i]["primary"], 144) << i;
+    }
   // TC07: the reference rows, the wide BVH's and the grid's trace the same rays: the images are
   // the same bits, so are the counts
   for (std::size_t i = 1; i < 6; ++i)
@@ -106,10 +131,14 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   EXPECT_LT(rows[4]["nodesPerRay"].get<double>(), rows[3]["nodesPerRay"].get<double>());
   // TC09: nodes per ray: none without a hierarchy, some through the BVH (and cells through the
   // grid)
+  // (none for Embree, which does not report its nodes: null)
   EXPECT_EQ(rows[0]["nodesPerRay"], 0);
   EXPECT_EQ(rows[1]["nodesPerRay"], 0);
+  EXPECT_TRUE(rows[EMBREE]["nodesPerRay"].is_null());
   for (std::size_t i = 3; i < rows.size(); ++i)
-    EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
+    if (i != EMBREE) {
+      EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
+    }
   // TC10: the reference report's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s,
   // 6 min 47 s), null after them (the grid's row first)
   const std::vector<int> reference{4860, 1540, 837, 407};
@@ -118,10 +147,11 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_TRUE(rows[i]["referenceSeconds"].is_null()) << i;
   // TC11: the speed-up is over the first row: exactly 1 there; the times and rates positive
   EXPECT_EQ(rows[0]["speedup"], 1);
-  for (const json& row : rows) {
-    EXPECT_GT(row["seconds"].get<double>(), 0) << row["name"];
-    EXPECT_GT(row["raysPerSecond"].get<double>(), 0) << row["name"];
-    EXPECT_GT(row["speedup"].get<double>(), 0) << row["name"];
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i == EMBREE && !HAVE_EMBREE) continue;  // TC14
+    EXPECT_GT(rows[i]["seconds"].get<double>(), 0) << i;
+    EXPECT_GT(rows[i]["raysPerSecond"].get<double>(), 0) << i;
+    EXPECT_GT(rows[i]["speedup"].get<double>(), 0) << i;
   }
   // TC12: one progress line per row started, on stderr
   const std::vector<std::string> err = lines(r.err);
@@ -132,6 +162,33 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_TRUE(err[i].starts_with("rt bench: row " + std::to_string(i + 1) + "/" +
                                    std::to_string(names.size()) + ": " + names[i] + " ("))
         << err[i];
+  // TC13: pixels differing from the first row's image: none for the project's structures and
+  // for the stage row of the same tracer (beams, the last); not compared for the other tracers
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i == EMBREE) continue;
+    if (i < EMBREE || i + 1 == rows.size())
+      EXPECT_EQ(rows[i]["pixelsDiffering"], 0) << i;
+    else
+      EXPECT_TRUE(rows[i]["pixelsDiffering"].is_null()) << i;
+    EXPECT_EQ(rows[i]["note"], "") << i;
+  }
+#if RT_HAVE_EMBREE
+  // TC14: Embree's row: the same camera rays, its pixels differing and its other rays as
+  // measured (float tests: a grazing ray may find another shape), its note naming its version
+  EXPECT_EQ(rows[EMBREE]["primary"], 144);
+  EXPECT_EQ(rows[EMBREE]["secondary"], rows[0]["secondary"]);
+  EXPECT_EQ(rows[EMBREE]["shadow"], rows[0]["shadow"]);
+  EXPECT_EQ(rows[EMBREE]["pixelsDiffering"], 0);
+  EXPECT_EQ(rows[EMBREE]["note"], "Embree 3.13.5: float tests; t recomputed exactly");
+#else
+  // TC14: without Embree, its row has no figures and says how to get it
+  for (const char* key : {"seconds", "primary", "secondary", "shadow", "raysPerSecond",
+                          "nodesPerRay", "speedup", "pixelsDiffering", "referenceSeconds"})
+    EXPECT_TRUE(rows[EMBREE][key].is_null()) << key;
+  EXPECT_EQ(rows[EMBREE]["note"], NOT_BUILT);
+  EXPECT_EQ(err[EMBREE], "rt bench: row 7/" + std::to_string(names.size()) + ": Embree 3 (" +
+                             NOT_BUILT + ")");
+#endif
 }
 
 TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
@@ -149,8 +206,9 @@ TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
   // TC02: the lecturer's thread rows, then the structures with every core, then every stage's
   // tracer through the BVH
   std::vector<std::string> names{
-      "no acceleration", "2 threads",           "3 threads",          "4 threads",     "threads",
-      "threads + CBR",   "threads + CBR + BVH", "threads + wide BVH", "threads + grid"};
+      "no acceleration",     "2 threads",          "3 threads",      "4 threads", "threads",
+      "threads + CBR",       "threads + CBR + BVH", "threads + wide BVH", "threads + grid",
+      "Embree 3"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   const json& rows = j["rows"];
   ASSERT_EQ(rows.size(), names.size());
@@ -165,6 +223,10 @@ TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
     EXPECT_EQ(rows[i]["threads"], threads[i]) << i;
   }
+  // TC03b: Embree's row after the structures, with every core, the teapot's tracer
+  EXPECT_EQ(rows[9]["tracer"], "whitted");
+  EXPECT_EQ(rows[9]["accel"], "embree");
+  EXPECT_EQ(rows[9]["threads"], every);
   // TC04: his times beside his rows (his 0 threads: 25 s; 2, 3, 4: 13.6, 10.7, 10.7; every
   // core: 9.3), none beside the others
   const std::vector<double> reference{25, 13.6, 10.7, 10.7, 9.3};
@@ -221,15 +283,24 @@ TEST(BenchTests, markdownHasACaptionAndTheReferenceTimes) {
                                  " threads for the multi-threaded rows, "))
       << out[0];
   EXPECT_TRUE(out[0].ends_with(
-      "; one render per row; reference: the reference report's times for its galaxy at 1280x720"))
+      "; one render per row; reference: the reference report's times for its galaxy at 1280x720; "
+      "pixels differing: from the first row's image, for the rows of its tracer" +
+      std::string(HAVE_EMBREE
+                      ? " (Embree tests its boxes and its spheres, triangles and quads in "
+                        "float: a ray that grazes a shape's edge can miss it there, where the "
+                        "exact test hits it; every hit Embree offers is checked and ordered by "
+                        "the project's exact test, so only such rays change a pixel; the "
+                        "project's structures differ in none)"
+                      : "")))
       << out[0];
   EXPECT_EQ(out[1], "");
   // TC02: the header and the alignment line, exactly
   EXPECT_EQ(out[2],
             "| row | tracer | accel | threads | wall | reference | primary | secondary | shadow | "
-            "rays/s | nodes/ray | speed-up |");
+            "rays/s | nodes/ray | speed-up | pixels differing | note |");
   EXPECT_EQ(out[3],
-            "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+            "| --- | --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | "
+            "---: | --- |");
   // TC03: the reference rows carry the report's times, written as the report has them
   const std::vector<std::string> reference{"1 h 21 min", "25 min 40 s", "13 min 57 s",
                                            "6 min 47 s"};
@@ -237,9 +308,22 @@ TEST(BenchTests, markdownHasACaptionAndTheReferenceTimes) {
     EXPECT_NE(out[4 + i].find(" s | " + reference[i] + " | 144 | "), std::string::npos)
         << out[4 + i];
   EXPECT_TRUE(out[4].starts_with("| no acceleration | beams | none | 1 | ")) << out[4];
-  EXPECT_TRUE(out[4].ends_with(" | 0.00 | 1.00 |")) << out[4];
+  EXPECT_TRUE(out[4].ends_with(" | 0.00 | 1.00 | 0 |  |")) << out[4];
   // TC04: an empty reference cell after them
   EXPECT_NE(out[8].find(" s |  | 144 | "), std::string::npos) << out[8];
+  // TC05: Embree's row: "—" for the nodes it does not count (and, without Embree, for every
+  // figure, with the note)
+#if RT_HAVE_EMBREE
+  EXPECT_TRUE(out[4 + EMBREE].starts_with("| Embree 3 | beams | embree | ")) << out[4 + EMBREE];
+  EXPECT_NE(out[4 + EMBREE].find(" | — | "), std::string::npos) << out[4 + EMBREE];
+  EXPECT_TRUE(out[4 + EMBREE].ends_with(" | Embree 3.13.5: float tests; t recomputed exactly |"))
+      << out[4 + EMBREE];
+#else
+  EXPECT_EQ(out[4 + EMBREE], "| Embree 3 | beams | embree | " + std::to_string(cores()) +
+                                 " | — |  | — | — | — | — | — | — | — | " + NOT_BUILT + " |");
+#endif
+  // TC06: the stage rows of other tracers are not compared: "—"
+  EXPECT_TRUE(out[4 + FIRST_STAGE].ends_with(" | — |  |")) << out[4 + FIRST_STAGE];
 }
 
 TEST(BenchTests, csvOfAnotherSceneHasNoReferenceTimes) {
@@ -250,18 +334,30 @@ TEST(BenchTests, csvOfAnotherSceneHasNoReferenceTimes) {
   // TC01: the header line, exactly
   EXPECT_EQ(out[0],
             "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,"
-            "speedup,referenceSeconds");
+            "speedup,referenceSeconds,pixelsDiffering,note");
   // TC02: the first row: the scene's tracer (ambient), no acceleration, one thread, 256 camera
   // rays and no others, no nodes, speed-up 1, and no reference time (the report timed its galaxy
   // only)
   EXPECT_TRUE(out[1].starts_with("no acceleration,ambient,none,1,")) << out[1];
   EXPECT_NE(out[1].find(",256,0,0,"), std::string::npos) << out[1];
-  EXPECT_TRUE(out[1].ends_with(",0,1,")) << out[1];
-  // TC03: every row has the twelve fields and an empty reference field
+  EXPECT_TRUE(out[1].ends_with(",0,1,,0,")) << out[1];
+  // TC03: every row has the fourteen fields and an empty reference field (the notes have no
+  // comma)
   for (std::size_t i = 1; i < out.size(); ++i) {
-    EXPECT_EQ(std::count(out[i].begin(), out[i].end(), ','), 11) << out[i];
-    EXPECT_TRUE(out[i].ends_with(",")) << out[i];
+    EXPECT_EQ(std::count(out[i].begin(), out[i].end(), ','), 13) << out[i];
+    if (i != 1 + EMBREE) {
+      EXPECT_TRUE(out[i].ends_with(",")) << out[i];
+    }
   }
+  // TC04: Embree's row: an empty nodes field; without Embree, empty figures and the note
+#if RT_HAVE_EMBREE
+  EXPECT_TRUE(out[1 + EMBREE].starts_with("Embree 3,ambient,embree,")) << out[1 + EMBREE];
+  EXPECT_TRUE(out[1 + EMBREE].ends_with(",0,Embree 3.13.5: float tests; t recomputed exactly"))
+      << out[1 + EMBREE];
+#else
+  EXPECT_EQ(out[1 + EMBREE],
+            "Embree 3,ambient,embree," + std::to_string(cores()) + ",,,,,,,,,," + NOT_BUILT);
+#endif
 }
 
 TEST(BenchTests, repeatTakesTheRowsInTurn) {

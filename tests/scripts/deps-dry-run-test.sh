@@ -65,5 +65,14 @@ STUB_MISSING="python3-matplotlib" check "TC06 dry run, the test command's extras
 # TC07: the model files' library (Assimp) is checked too, and named when missing
 STUB_MISSING="libassimp-dev" check "TC07 dry run, Assimp missing" 0 \
   "deps.sh: dry run: missing: libassimp-dev" --dry-run
+# TC08: --embree adds Embree 3 to the packages checked
+STUB_MISSING="" check "TC08 dry run, --embree checks Embree" 0 \
+  "deps.sh: dry run: nothing missing ($all libembree-dev)" --dry-run --embree
+# TC09: --embree with Embree missing names it alone, and runs nothing
+STUB_MISSING="libembree-dev" check "TC09 dry run, Embree missing" 0 \
+  "deps.sh: dry run: missing: libembree-dev" --embree --dry-run
+# TC10: without --embree, a missing Embree is not asked for
+STUB_MISSING="libembree-dev" check "TC10 Embree missing, not asked for" 0 \
+  "deps.sh: dry run: nothing missing ($all)" --dry-run
 
 ((failures == 0))

@@ -188,23 +188,41 @@ class GalleryTest(unittest.TestCase):
         # EP03: every other row as rays per second, three significant digits
         for text in ("mini 2: whitted, BVH (whitted)", "mini 2: whitted, BVH, 4 threads (whitted)",
                      "stage 5: phong, BVH (phong)", "106 k rays/s", "424 k rays/s",
-                     "160 k rays/s"):
+                     "160 k rays/s", "Embree 3 (whitted)", "530 k rays/s"):
             self.assertIn(text, rates)
         self.assertNotIn("stage 7: whitted, no acceleration (whitted)", rates)
+        # BV01: a row that was not rendered (its figures null) is in neither chart
+        for chart in (reference, rates):
+            self.assertNotIn("not built", chart)
 
     def test_timing_table(self) -> None:
         # EP01: a header and a row per bench row
-        self.assertEqual(len(self.page.cells), 5)
-        self.assertEqual(self.page.cells[0][-2:], ["speed-up", "the reference report"])
+        self.assertEqual(len(self.page.cells), 7)
+        self.assertEqual(self.page.cells[0][-4:], ["speed-up", "the reference report",
+                                                   "pixels differing", "note"])
         # EP02: the speed-up to three significant digits where the row traces the first row's
-        # rays; BV01: "—" for a row of other work (the phong row casts no secondary ray)
-        self.assertEqual([row[-2] for row in self.page.cells[1:]],
-                         ["1.00×", "4.00×", "16.0×", "—"])
-        self.assertEqual([row[-1] for row in self.page.cells[1:]], ["16 s", "—", "—", "—"])
-        # EP03: rays per second and nodes per ray to three significant digits
+        # rays; BV01: "—" for a row of other work (the phong row casts no secondary ray), and
+        # for the row not rendered
+        self.assertEqual([row[-4] for row in self.page.cells[1:]],
+                         ["1.00×", "4.00×", "16.0×", "20.0×", "—", "—"])
+        self.assertEqual([row[-3] for row in self.page.cells[1:]],
+                         ["16 s", "—", "—", "—", "—", "—"])
+        # EP03: rays per second and nodes per ray to three significant digits; "—" where null
+        # (Embree counts no nodes; the row not rendered has no figures)
         self.assertEqual([row[8] for row in self.page.cells[1:]],
-                         ["26.5 k", "106 k", "424 k", "160 k"])
-        self.assertEqual([row[9] for row in self.page.cells[1:]], ["1010", "37.3", "37.3", "6.72"])
+                         ["26.5 k", "106 k", "424 k", "530 k", "—", "160 k"])
+        self.assertEqual([row[9] for row in self.page.cells[1:]],
+                         ["1010", "37.3", "37.3", "—", "—", "6.72"])
+        # EP05: the pixels differing and the notes; BV02: a row written before they were (the
+        # first) shows "—" and no note
+        self.assertEqual([row[-2] for row in self.page.cells[1:]],
+                         ["—", "0", "0", "3", "—", "—"])
+        self.assertEqual([row[-1] for row in self.page.cells[1:]],
+                         ["", "", "", "Embree 3.13.5: float tests; t recomputed exactly",
+                          "not built: install libembree-dev (scripts/deps.sh --embree) and "
+                          "reconfigure", ""])
+        # BV03: the row not rendered shows "—" for its time and rays
+        self.assertEqual(self.page.cells[5][4:8], ["—", "—", "—", "—"])
         # EP04: the table scrolls on its own on a narrow page
         self.assertIn('<div class="table"><table>', self.text)
 
@@ -252,6 +270,22 @@ class GalleryTest(unittest.TestCase):
         self.assertEqual(r.stderr,
                          f"make-gallery: {bad}: rows[0].referenceSeconds: expected a number >= 0, "
                          "got -1\n")
+        # BV02: a negative count of pixels differing
+        bad.write_text(BENCH.read_text(encoding="utf-8").replace('"pixelsDiffering": 3',
+                                                                 '"pixelsDiffering": -3'),
+                       encoding="utf-8")
+        r = make_gallery("--root", self.root, "--bench", bad, "-o", output)
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr,
+                         f"make-gallery: {bad}: rows[3].pixelsDiffering: expected null or a "
+                         "count >= 0, got -3\n")
+        # BV03: null is a figure only a row can lack, never its name
+        bad.write_text(BENCH.read_text(encoding="utf-8").replace('"name": "Embree 3",',
+                                                                 '"name": null,'),
+                       encoding="utf-8")
+        r = make_gallery("--root", self.root, "--bench", bad, "-o", output)
+        self.assertEqual(r.returncode, 2)
+        self.assertEqual(r.stderr, f"make-gallery: {bad}: rows[3].name: expected str, got None\n")
 
 
 # ---- The browser -------------------------------------------------------------------------------

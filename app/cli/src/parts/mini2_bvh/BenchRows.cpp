@@ -1,8 +1,11 @@
 // rt bench's timing table: one scene rendered with the reference report's rows (no acceleration
 // on one thread; threads; threads + CBR; threads + CBR + BVH) beside the report's own times and
 // the course's other structure, the regular grid, beside them (threads + grid, no report time),
-// then by every stage's tracer through the BVH on every thread; rows taken in turn, the medians
+// Intel's Embree 3 after them (a measuring stick, where the build has Embree), then by every
+// stage's tracer through the BVH on every thread; rows taken in turn, the medians
 // kept. The course's teapots have their lecturer's rows instead, his thread counts and times.
+#include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -20,6 +23,9 @@
 #include "cli/Registry.h"
 #include "cli/Tracers.h"
 #include "parallel/TilePool.h"
+#if RT_HAVE_EMBREE
+#include "embree/EmbreeScene.h"
+#endif
 
 namespace rt::cli {
 
@@ -33,6 +39,11 @@ constexpr int DEFAULT_WIDTH = 128;
 /// A row's threads: every core (--threads, default one per core), or a fixed count.
 constexpr int EVERY_CORE = 0;
 
+/// Intel's Embree 3 (mini2_bvh/include/embree/EmbreeScene.h): a row after the project's
+/// structures, a measuring stick; in a build without Embree, the row says how to get it.
+constexpr const char* EMBREE_ROW = "Embree 3";
+constexpr const char* EMBREE_ACCEL = "embree";
+
 /// A row of the scene's tracer beside someone's time for the same configuration.
 struct ReferenceRow {
   const char* name;
@@ -43,7 +54,7 @@ struct ReferenceRow {
 
 /// The reference report's rows and times (the Java project the course started from): its galaxy
 /// at 1280 x 720 (course catalogue §5); then the wide BVH and the regular grid, which the report
-/// did not have.
+/// did not have, and Embree.
 /// Every scene but the teapots has these rows (without the times).
 constexpr ReferenceRow REPORT_ROWS[] = {
     {"no acceleration", "none", 1, 4860},             // 1 h 21 min
@@ -52,13 +63,14 @@ constexpr ReferenceRow REPORT_ROWS[] = {
     {"threads + CBR + BVH", "bvh", EVERY_CORE, 407},  // 6 min 47 s
     {"threads + wide BVH", "bvh4", EVERY_CORE, std::nullopt},
     {"threads + grid", "grid", EVERY_CORE, std::nullopt},
+    {EMBREE_ROW, EMBREE_ACCEL, EVERY_CORE, std::nullopt},
 };
 
 /// The course lecturer's TeapotTest of 2025 (1000 x 1000, 400 bubbles, no acceleration) timed
 /// with his thread counts, in comments of the file (course catalogue §5): setMultithreading(0),
 /// no threads, 25 s; 2, 3 and 4 threads 13.6, 10.7 and 10.7 s; -2, every core, 9.3 s. (One
 /// worker thread took 25.8 s and parallel streams 9.6 s: the caption says so, no row has them.)
-/// Then the structures, which he did not time there.
+/// Then the structures, which he did not time there, and Embree.
 constexpr ReferenceRow LECTURER_ROWS[] = {
     {"no acceleration", "none", 1, 25},
     {"2 threads", "none", 2, 13.6},
@@ -69,6 +81,7 @@ constexpr ReferenceRow LECTURER_ROWS[] = {
     {"threads + CBR + BVH", "bvh", EVERY_CORE, std::nullopt},
     {"threads + wide BVH", "bvh4", EVERY_CORE, std::nullopt},
     {"threads + grid", "grid", EVERY_CORE, std::nullopt},
+    {EMBREE_ROW, EMBREE_ACCEL, EVERY_CORE, std::nullopt},
 };
 
 /// The built-in scenes whose rows carry someone's times, and whose they are.
@@ -93,6 +106,25 @@ Reference referenceOf(std::string_view scene) {
   for (const Reference& r : REFERENCES)
     if (r.scene == scene) return r;
   return {scene, REPORT_ROWS, ""};
+}
+
+/// The image's pixels as the PNG has them: 8 bits per channel, row by row.
+std::vector<std::array<std::uint8_t, 3>> rgb8(const Image& image) {
+  std::vector<std::array<std::uint8_t, 3>> out;
+  out.reserve(static_cast<std::size_t>(image.nX()) * static_cast<std::size_t>(image.nY()));
+  for (int y = 0; y < image.nY(); ++y)
+    for (int x = 0; x < image.nX(); ++x) out.push_back(image.pixel(x, y).toRgb8());
+  return out;
+}
+
+/// The pixels of image whose 8-bit colour is not reference's.
+std::uint64_t pixelsDiffering(const std::vector<std::array<std::uint8_t, 3>>& reference,
+                              const Image& image) {
+  std::uint64_t n = 0;
+  std::size_t k = 0;
+  for (int y = 0; y < image.nY(); ++y)
+    for (int x = 0; x < image.nX(); ++x) n += image.pixel(x, y).toRgb8() != reference[k++] ? 1 : 0;
+  return n;
 }
 
 /// A row ready to render: its tracer built over the scene and its acceleration.
@@ -140,13 +172,29 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
 
   // Every structure before the first ray: one acceleration of each kind used, the tracers, the
   // sampler, the camera and its image (which every row renders into).
+  // Embree's scene is built where the build has Embree; without it, its row is not rendered.
   std::map<std::string, std::unique_ptr<Intersectable>> accelerations;
-  for (const auto& [row, kind] : plan)
+  for (auto& [row, kind] : plan) {
+    if (row.accel == EMBREE_ACCEL) {
+      row.countsNodes = false;  // Embree does not report its nodes
+#if RT_HAVE_EMBREE
+      row.note = std::string("Embree ") + EmbreeScene::version() +
+                 ": float tests; t recomputed exactly";
+      if (!accelerations.contains(row.accel))
+        accelerations[row.accel] = std::make_unique<EmbreeScene>(doc.scene->geometries);
+#else
+      row.rendered = false;
+      row.note = std::string(EMBREE_NOT_BUILT);
+#endif
+      continue;
+    }
     if (!accelerations.contains(row.accel))
       accelerations[row.accel] = makeAcceleration(row.accel, doc.scene->geometries);
+  }
   std::vector<PlannedRow> rows;
   for (auto& [row, kind] : plan) {
-    std::unique_ptr<RayTracer> tracer = kind->make(doc, accelerations.at(row.accel).get());
+    std::unique_ptr<RayTracer> tracer =
+        row.rendered ? kind->make(doc, accelerations.at(row.accel).get()) : nullptr;
     rows.push_back({std::move(row), std::move(tracer)});
   }
   const std::unique_ptr<PixelSampler> sampler = cliRegistry().makeSampler(doc.render);
@@ -156,6 +204,7 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   // Round robin: repeat r renders every row once, so that a change of the machine's load hits
   // every row alike; each row's time is the median of its renders.
   std::vector<std::vector<double>> seconds(rows.size());
+  std::vector<std::array<std::uint8_t, 3>> reference8;  // the first row's image, 8 bits
   const std::size_t n = rows.size();
   for (int r = 0; r < args.repeat; ++r)
     for (std::size_t i = 0; i < n; ++i) {
@@ -164,6 +213,10 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       if (io.stop && io.stop->load()) return benchInterrupted(where, args, io);
       io.err << "rt bench: row " << i + 1 << "/" << n;
       if (args.repeat > 1) io.err << ", repeat " << r + 1 << "/" << args.repeat;
+      if (!row.rendered) {  // Embree 3 in a build without it: the line says how to get it
+        io.err << ": " << row.name << " (" << row.note << ")" << std::endl;
+        continue;
+      }
       io.err << ": " << row.name << " (tracer " << row.tracer << ", accel " << row.accel << ", "
              << threadsText(row.threads) << ")" << std::endl;
       RenderOptions options;
@@ -172,6 +225,11 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       const RenderResult result = renderImage({camera, *rows[i].tracer, *sampler}, image, options);
       if (result.interrupted || (io.stop && io.stop->load()))
         return benchInterrupted(where, args, io);
+      // Pixels differing from the first row's image: once (the renders are deterministic), for
+      // the rows of the first row's tracer.
+      if (r == 0 && i == 0) reference8 = rgb8(image);
+      if (r == 0 && row.tracer == rows[0].row.tracer)
+        row.pixelsDiffering = pixelsDiffering(reference8, image);
       seconds[i].push_back(result.seconds);
       row.counts = result.counts;  // the same every repeat: the render is deterministic
       row.threads = result.threads;
@@ -185,7 +243,7 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
                    .repeat = args.repeat,
                    .reference = std::string(reference.source)};
   for (std::size_t i = 0; i < n; ++i) {
-    rows[i].row.seconds = median(seconds[i]);
+    rows[i].row.seconds = seconds[i].empty() ? 0 : median(seconds[i]);
     table.rows.push_back(rows[i].row);
   }
   emit(

@@ -63,6 +63,16 @@ class MarkdownTable {
   std::vector<std::vector<std::string>> rows_;
 };
 
+/// A Markdown cell of a figure that was not measured.
+constexpr std::string_view NOT_MEASURED = "—";
+
+/// Why the row "Embree 3" differs from the others, for the caption.
+constexpr std::string_view EMBREE_CAPTION =
+    " (Embree tests its boxes and its spheres, triangles and quads in float: a ray that grazes "
+    "a shape's edge can miss it there, where the exact test hits it; every hit Embree offers is "
+    "checked and ordered by the project's exact test, so only such rays change a pixel; the "
+    "project's structures differ in none)";
+
 std::string rendersOf(int repeat) {
   return repeat == 1
              ? "one render per row"
@@ -90,20 +100,24 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
   switch (format) {
     case TableFormat::Json: {
       Json rows = Json::array();
-      for (const BenchRow& r : table.rows)
+      for (const BenchRow& r : table.rows) {
+        const auto measured = [&r](Json value) { return r.rendered ? value : Json(); };
         rows.push_back(Json{
             {"name", r.name},
             {"tracer", r.tracer},
             {"accel", r.accel},
             {"threads", r.threads},
-            {"seconds", jsonNumber(r.seconds)},
-            {"primary", r.counts.primary},
-            {"secondary", r.counts.secondary},
-            {"shadow", r.counts.shadow},
-            {"raysPerSecond", jsonNumber(std::round(r.raysPerSecond()))},
-            {"nodesPerRay", jsonNumber(r.nodesPerRay())},
-            {"speedup", jsonNumber(table.speedup(r))},
-            {"referenceSeconds", r.referenceSeconds ? jsonNumber(*r.referenceSeconds) : Json()}});
+            {"seconds", measured(jsonNumber(r.seconds))},
+            {"primary", measured(r.counts.primary)},
+            {"secondary", measured(r.counts.secondary)},
+            {"shadow", measured(r.counts.shadow)},
+            {"raysPerSecond", measured(jsonNumber(std::round(r.raysPerSecond())))},
+            {"nodesPerRay", r.countsNodes ? measured(jsonNumber(r.nodesPerRay())) : Json()},
+            {"speedup", measured(jsonNumber(table.speedup(r)))},
+            {"referenceSeconds", r.referenceSeconds ? jsonNumber(*r.referenceSeconds) : Json()},
+            {"pixelsDiffering", r.pixelsDiffering ? Json(*r.pixelsDiffering) : Json()},
+            {"note", r.note}});
+      }
       return formatJson(
           Json{{"scene", table.scene},
                {"width", table.width},
@@ -115,13 +129,20 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
     }
     case TableFormat::Csv: {
       std::string out = std::string(BENCH_CSV_HEADER) + "\n";
-      for (const BenchRow& r : table.rows)
+      for (const BenchRow& r : table.rows) {
+        const auto measured = [&r](std::string text) { return r.rendered ? text : std::string(); };
         out += csvField(r.name) + "," + csvField(r.tracer) + "," + csvField(r.accel) + "," +
-               std::to_string(r.threads) + "," + formatNumber(r.seconds) + "," +
-               std::to_string(r.counts.primary) + "," + std::to_string(r.counts.secondary) + "," +
-               std::to_string(r.counts.shadow) + "," + formatNumber(std::round(r.raysPerSecond())) +
-               "," + formatNumber(r.nodesPerRay()) + "," + formatNumber(table.speedup(r)) + "," +
-               (r.referenceSeconds ? formatNumber(*r.referenceSeconds) : std::string()) + "\n";
+               std::to_string(r.threads) + "," + measured(formatNumber(r.seconds)) + "," +
+               measured(std::to_string(r.counts.primary)) + "," +
+               measured(std::to_string(r.counts.secondary)) + "," +
+               measured(std::to_string(r.counts.shadow)) + "," +
+               measured(formatNumber(std::round(r.raysPerSecond()))) + "," +
+               (r.countsNodes ? measured(formatNumber(r.nodesPerRay())) : std::string()) + "," +
+               measured(formatNumber(table.speedup(r))) + "," +
+               (r.referenceSeconds ? formatNumber(*r.referenceSeconds) : std::string()) + "," +
+               (r.pixelsDiffering ? std::to_string(*r.pixelsDiffering) : std::string()) + "," +
+               csvField(r.note) + "\n";
+      }
       return out;
     }
     case TableFormat::Markdown:
@@ -131,18 +152,33 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
   for (const BenchRow& r : table.rows) reference = reference || r.referenceSeconds.has_value();
   reference = reference && !table.reference.empty();
   MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "reference", "primary",
-                    "secondary", "shadow", "rays/s", "nodes/ray", "speed-up"},
-                   {false, false, false, true, true, true, true, true, true, true, true, true});
-  for (const BenchRow& r : table.rows)
-    md.add({r.name, r.tracer, r.accel, std::to_string(r.threads), formatDuration(r.seconds),
+                    "secondary", "shadow", "rays/s", "nodes/ray", "speed-up", "pixels differing",
+                    "note"},
+                   {false, false, false, true, true, true, true, true, true, true, true, true, true,
+                    false});
+  bool embree = false;
+  for (const BenchRow& r : table.rows) {
+    embree = embree || (r.accel == "embree" && r.rendered);
+    const auto measured = [&r](std::string text) {
+      return r.rendered ? text : std::string(NOT_MEASURED);
+    };
+    md.add({r.name, r.tracer, r.accel, std::to_string(r.threads),
+            measured(formatDuration(r.seconds)),
             r.referenceSeconds ? formatDuration(*r.referenceSeconds) : std::string(),
-            std::to_string(r.counts.primary), std::to_string(r.counts.secondary),
-            std::to_string(r.counts.shadow), fixed(r.raysPerSecond(), 0), fixed(r.nodesPerRay(), 2),
-            fixed(table.speedup(r), 2)});
+            measured(std::to_string(r.counts.primary)),
+            measured(std::to_string(r.counts.secondary)),
+            measured(std::to_string(r.counts.shadow)), measured(fixed(r.raysPerSecond(), 0)),
+            r.countsNodes ? measured(fixed(r.nodesPerRay(), 2)) : std::string(NOT_MEASURED),
+            measured(fixed(table.speedup(r), 2)),
+            r.pixelsDiffering ? std::to_string(*r.pixelsDiffering) : std::string(NOT_MEASURED),
+            r.note});
+  }
   return "rt bench " + table.scene + ": " + std::to_string(table.width) + "x" +
          std::to_string(table.height) + ", " + std::to_string(table.threads) +
          " threads for the multi-threaded rows, " + table.machine + "; " + rendersOf(table.repeat) +
-         (reference ? "; reference: " + table.reference : "") + "\n\n" + md.text();
+         (reference ? "; reference: " + table.reference : "") +
+         "; pixels differing: from the first row's image, for the rows of its tracer" +
+         (embree ? std::string(EMBREE_CAPTION) : std::string()) + "\n\n" + md.text();
 }
 
 std::vector<std::string> scalingKeys(const ScalingKind& kind) {

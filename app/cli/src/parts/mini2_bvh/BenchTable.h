@@ -19,11 +19,21 @@ enum class TableFormat { Markdown, Csv, Json };
 struct BenchRow {
   std::string name;    ///< "no acceleration, 1 thread", ..., or the tracer's stage
   std::string tracer;  ///< a tracer's name (--tracer)
-  std::string accel;   ///< none, cbr, bvh, bvh4 or grid
+  std::string accel;   ///< none, cbr, bvh, bvh4, grid, or embree (the row "Embree 3")
   int threads = 1;     ///< threads that rendered (never more than the image's tiles)
   double seconds = 0;  ///< wall time of the render: the median of the repeats
   RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
   std::optional<double> referenceSeconds{};  ///< the reference report's time for this row, if any
+  /// False for a row that was not rendered (Embree 3 in a build without Embree): its figures are
+  /// null in JSON, empty in CSV, "—" in Markdown; its note says why.
+  bool rendered = true;
+  /// False when the structure does not report its nodes (Embree): nodesPerRay is then null.
+  bool countsNodes = true;
+  /// Pixels whose 8-bit colour differs from the first row's image ("no acceleration"): for the
+  /// rows of the first row's tracer (0 for the project's structures, which are bit-identical);
+  /// none for the rows of other tracers, which render another image.
+  std::optional<std::uint64_t> pixelsDiffering{};
+  std::string note{};  ///< what the figures alone do not say ("" for most rows)
 
   double raysPerSecond() const;  ///< every ray (primary, secondary, shadow) per wall second
   double nodesPerRay() const;    ///< BVH nodes visited per ray, of every kind
@@ -92,7 +102,11 @@ std::string formatScalingTable(const ScalingTable& table, TableFormat format);
 /// The CSV header line of the timing table (the tests and the docs quote it).
 inline constexpr std::string_view BENCH_CSV_HEADER =
     "name,tracer,accel,threads,seconds,primary,secondary,shadow,raysPerSecond,nodesPerRay,speedup,"
-    "referenceSeconds";
+    "referenceSeconds,pixelsDiffering,note";
+
+/// The note of the row "Embree 3" in a build without Embree.
+inline constexpr std::string_view EMBREE_NOT_BUILT =
+    "not built: install libembree-dev (scripts/deps.sh --embree) and reconfigure";
 
 /// The keys of a scaling's row, in order: its CSV header's fields and its JSON objects' keys
 /// (the galaxy's: stars, shapes, buildSeconds, ..., bytesPerStar, ..., gridCellsPerRay).
