@@ -384,11 +384,12 @@ def page_failures(browser: str, tmp: Path, page: Path, width: int,
 
 
 def bench_labels(bench: Path) -> list[str]:
-    """The labels the charts must show for a timing file: each row's name (a reference row's
-    alone, another's with its tracer)."""
+    """The labels the charts must show for a timing file: each rendered row's name (a reference
+    row's alone, another's with its tracer); a row that was not rendered (no seconds: Embree in
+    a build without it) is in the table only."""
     rows = json.loads(bench.read_text(encoding="utf-8"))["rows"]
     return [r["name"] if r.get("referenceSeconds") is not None
-            else f'{r["name"]} ({r["tracer"]})' for r in rows]
+            else f'{r["name"]} ({r["tracer"]})' for r in rows if r.get("seconds") is not None]
 
 
 def screenshot(browser: str, tmp: Path, page: Path, shot: Path, width: int) -> list[str]:
