@@ -71,8 +71,9 @@ class EmbreeScene final : public Intersectable {
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-  /// The nearest hit in (0, tMax]: the primitive Embree finds nearest (in float), with the t of
-  /// the project's exact test; ties between the unbounded shapes and it by (t, index).
+  /// The nearest hit in (0, tMax]: the smallest exact (t, index) pair among the unbounded shapes
+  /// and the candidates Embree offers (found in float, each checked by the project's exact test,
+  /// whose t is returned).
   std::optional<Hit> closestHit(const Ray& ray, double tMax = INFINITE_DISTANCE,
                                 QueryCounts* counts = nullptr) const noexcept override;
   /// Every hit in (0, tMax] of every primitive Embree finds, with the exact t; stops when visit
