@@ -255,8 +255,6 @@ TEST(EmbreeTests, tinyGalaxyDiffersInThePixelsMeasured) {
     for (int x = 0; x < view.nX; ++x)
       differing += a.pixel(x, y).toRgb8() != b.pixel(x, y).toRgb8() ? 1 : 0;
   EXPECT_EQ(differing, 0);
-  EXPECT_EQ(view.nX * view.nY, 2304);
-
 }
 
 }  // namespace

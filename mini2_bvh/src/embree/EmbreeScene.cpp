@@ -123,6 +123,7 @@ struct Query {
   const EmbreeScene::Impl* impl;
   const Ray* ray;
   double tMax;
+  float tFar;  ///< floatAtLeast(tMax): the ray's far end for Embree, computed once per query
   const HitVisitor* visit;  // forEachHit; null for closestHit
   bool stopped = false;
   std::uint64_t tests = 0;
@@ -180,7 +181,7 @@ void nativeFilter(const RTCFilterFunctionNArguments* args) {
     if (!t || !q.offer(*t, p))
       args->valid[0] = 0;
     else  // accepted: Embree keeps the ray's far end the filter leaves
-      RTCRayN_tfar(args->ray, args->N, 0) = std::min(q.farEnd(), floatAtLeast(q.tMax));
+      RTCRayN_tfar(args->ray, args->N, 0) = std::min(q.farEnd(), q.tFar);
     return;
   }
   args->valid[0] = 0;  // forEachHit: visit, then let the walk go on
@@ -208,7 +209,7 @@ void userIntersect(const RTCIntersectFunctionNArguments* args) {
   const Roots roots = q.impl->primitives.roots(p, *q.ray);
   if (roots.empty() || !withinDistance(roots[0], q.tMax) || !q.offer(roots[0], p)) return;
   RTCRayHit& rh = *reinterpret_cast<RTCRayHit*>(args->rayhit);
-  rh.ray.tfar = std::min(q.farEnd(), floatAtLeast(q.tMax));
+  rh.ray.tfar = std::min(q.farEnd(), q.tFar);
   rh.hit.geomID = args->geomID;
   rh.hit.primID = args->primID;
   rh.hit.Ng_x = rh.hit.Ng_y = rh.hit.Ng_z = 0;
@@ -254,6 +255,7 @@ void initQuery(Query& q, const EmbreeScene::Impl* impl, const Ray& ray, double t
   q.impl = impl;
   q.ray = &ray;
   q.tMax = tMax;
+  q.tFar = floatAtLeast(tMax);
   q.visit = visit;
   const Double3& o = ray.head().xyz();
   q.scale = std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)});

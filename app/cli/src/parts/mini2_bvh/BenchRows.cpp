@@ -120,10 +120,9 @@ std::vector<std::array<std::uint8_t, 3>> rgb8(const Image& image) {
 /// The pixels of image whose 8-bit colour is not reference's.
 std::uint64_t pixelsDiffering(const std::vector<std::array<std::uint8_t, 3>>& reference,
                               const Image& image) {
+  const std::vector<std::array<std::uint8_t, 3>> pixels = rgb8(image);
   std::uint64_t n = 0;
-  std::size_t k = 0;
-  for (int y = 0; y < image.nY(); ++y)
-    for (int x = 0; x < image.nX(); ++x) n += image.pixel(x, y).toRgb8() != reference[k++] ? 1 : 0;
+  for (std::size_t k = 0; k < pixels.size(); ++k) n += pixels[k] != reference[k] ? 1 : 0;
   return n;
 }
 
