@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <new>
 #include <span>
@@ -19,6 +20,8 @@
 #include <system_error>
 #include <utility>
 
+#include <assimp/IOSystem.hpp>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -253,6 +256,46 @@ void requirePlyHeaderEnds(std::string_view start, const std::string& source) {
                                std::to_string(start.size()) + " bytes)");
 }
 
+/// Assimp's files served from a ModelFileSource: the disk with every file opened kept in the
+/// record (each read whole, once, then served from memory), or the replayed set's files only.
+class SourceIoSystem final : public Assimp::IOSystem {
+ public:
+  explicit SourceIoSystem(const ModelFileSource& source) : source_(source) {}
+
+  bool Exists(const char* path) const override {
+    if (source_.replay) return source_.replay->files.contains(path);
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+  }
+  char getOsSeparator() const override { return '/'; }
+  Assimp::IOStream* Open(const char* path, const char* mode) override {
+    if (std::strchr(mode, 'w') != nullptr || std::strchr(mode, 'a') != nullptr) return nullptr;
+    const std::string* bytes = source_.replay ? find(*source_.replay, path) : record(path);
+    if (bytes == nullptr) return nullptr;
+    return new Assimp::MemoryIOStream(reinterpret_cast<const std::uint8_t*>(bytes->data()),
+                                      bytes->size());
+  }
+  void Close(Assimp::IOStream* stream) override { delete stream; }
+
+ private:
+  static const std::string* find(const ModelFileSet& set, const char* path) {
+    const auto it = set.files.find(path);
+    return it == set.files.end() ? nullptr : &it->second;
+  }
+  const std::string* record(const char* path) {
+    if (const std::string* kept = find(*source_.record, path)) return kept;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return nullptr;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return nullptr;
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) return nullptr;
+    return &(source_.record->files[path] = std::move(bytes));
+  }
+
+  ModelFileSource source_;
+};
+
 }  // namespace
 
 ModelError::ModelError(std::string file, const std::string& what)
@@ -260,31 +303,46 @@ ModelError::ModelError(std::string file, const std::string& what)
 
 bool modelFilesSupported() { return true; }
 
-ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options) {
+ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options,
+                        const ModelFileSource& from) {
   const std::string source = file.string();
-  // Assimp's own message for a missing file does not say why; the system's reason does.
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw ModelError(source, "cannot read: it is a directory");
-  // A device or a pipe (/dev/zero, a FIFO) would be read forever or block.
-  if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
-    throw ModelError(source, "cannot read: it is not a regular file");
-  std::FILE* f = std::fopen(source.c_str(), "rb");
-  if (f == nullptr) throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
-  std::string start(kPlyHeaderLimit, '\0');
-  start.resize(std::fread(start.data(), 1, start.size(), f));
-  std::fclose(f);
-  requirePlyHeaderEnds(start, source);
+  if (from.replay) {
+    // What the machine that read the files sent: the file itself must be among them.
+    const auto it = from.replay->files.find(source);
+    if (it == from.replay->files.end())
+      throw ModelError(source, "cannot read: not among the model files received (" +
+                                   std::to_string(from.replay->files.size()) + ")");
+    requirePlyHeaderEnds(std::string_view(it->second).substr(0, kPlyHeaderLimit), source);
+  } else {
+    // Assimp's own message for a missing file does not say why; the system's reason does.
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec))
+      throw ModelError(source, "cannot read: it is a directory");
+    // A device or a pipe (/dev/zero, a FIFO) would be read forever or block.
+    if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+      throw ModelError(source, "cannot read: it is not a regular file");
+    std::FILE* f = std::fopen(source.c_str(), "rb");
+    if (f == nullptr)
+      throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
+    std::string start(kPlyHeaderLimit, '\0');
+    start.resize(std::fread(start.data(), 1, start.size(), f));
+    std::fclose(f);
+    requirePlyHeaderEnds(start, source);
+  }
   fromOptions(options.transform, source);  // refused before the file is parsed
 
   Assimp::Importer importer;
+  if (from.record || from.replay) importer.SetIOHandler(new SourceIoSystem(from));  // it owns it
   try {
     const unsigned flags = flagsFor(importer, options);
     const aiScene* scene = importer.ReadFile(source, aiProcess_ValidateDataStructure);
     return toModel(postProcess(importer, scene, flags, source), importer, source, options);
   } catch (const std::bad_alloc&) {
-    throw ModelError(source, "out of memory while reading the file (" +
-                                 std::to_string(std::filesystem::file_size(file, ec)) + " bytes)");
+    std::error_code ec;
+    const std::uintmax_t size = from.replay ? from.replay->files.at(source).size()
+                                            : std::filesystem::file_size(file, ec);
+    throw ModelError(source, "out of memory while reading the file (" + std::to_string(size) +
+                                 " bytes)");
   }
 }
 

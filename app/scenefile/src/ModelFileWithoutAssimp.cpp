@@ -17,7 +17,8 @@ ModelError::ModelError(std::string file, const std::string& what)
 
 bool modelFilesSupported() { return false; }
 
-ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions&) {
+ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions&,
+                        const ModelFileSource&) {
   throw ModelError(file.string(), kNeedsAssimp);
 }
 

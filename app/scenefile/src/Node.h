@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "SourceMap.h"
+#include "scenefile/ModelFile.h"
 #include "scenefile/SceneDocument.h"
 
 namespace rt::scenefile {
@@ -29,6 +30,8 @@ struct Context {
   std::string source;
   const SourceMap& map;
   SceneDocument doc;
+  /// Where the meshes' model files are read (the disk unless parseScene was told otherwise).
+  ModelFileSource models;
 
   /// What a part of the format keeps while it reads (stage 5: its index of the appearance
   /// table's rows), one value per type.

@@ -17,7 +17,8 @@ namespace rt {
 // ---------------------------------------------------------------------------------------------
 // The public API
 
-SceneDocument parseScene(std::string_view text, const std::string& sourceName) {
+SceneDocument parseScene(std::string_view text, const std::string& sourceName,
+                         const ModelFileSource& models) {
   using namespace scenefile;
   SourceMap map;
   if (const std::optional<SyntaxProblem> problem = scanSource(text, map)) {
@@ -27,6 +28,7 @@ SceneDocument parseScene(std::string_view text, const std::string& sourceName) {
   // The text is valid JSON (the first pass checked it with the same parser).
   const Json root = Json::parse(text.begin(), text.end());
   Context ctx(text, sourceName, map);
+  ctx.models = models;
   const SceneFormat& format = sceneFormat();
   ctx.doc.scene = format.liftScene(Scene{});
   static const KeyTable<SceneDocument> documentKeys = format.table<SceneDocument>("document");
@@ -36,7 +38,9 @@ SceneDocument parseScene(std::string_view text, const std::string& sourceName) {
   return std::move(ctx.doc);
 }
 
-SceneDocument loadScene(const std::string& path) {
+SceneDocument loadScene(const std::string& path) { return parseScene(readSceneText(path), path); }
+
+std::string readSceneText(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw SceneError("cannot read " + path + ": it is a directory");
@@ -51,7 +55,7 @@ SceneDocument loadScene(const std::string& path) {
                        std::to_string(MAX_SCENE_FILE_BYTES >> 20) + " MiB");
   }
   if (in.bad()) throw SceneError("cannot read " + path + ": " + std::strerror(errno));
-  return parseScene(text, path);
+  return text;
 }
 
 std::vector<std::string_view> knownTracers() { return scenefile::sceneFormat().tracers(); }

@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -70,7 +71,31 @@ struct ModelFile {
   std::size_t ignoredLines = 0;      ///< line primitives of the file, not read
 };
 
-/// Reads the model file at file.
+/// The bytes of the files that model readings opened (each model file and the files it refers
+/// to: an OBJ's material library, a glTF's buffers), by the path they were opened with. A render
+/// across machines (rt-mpi) reads them on one machine and sends them to the others, which then
+/// read the same models without a shared file system.
+struct ModelFileSet {
+  std::map<std::string, std::string> files;  ///< path as opened -> the file's bytes
+
+  /// The bytes of every file together.
+  std::size_t bytes() const noexcept {
+    std::size_t n = 0;
+    for (const auto& file : files) n += file.second.size();
+    return n;
+  }
+};
+
+/// Where readModelFile reads: the disk (both null, the default); the disk, with every file it
+/// opens kept in *record; or *replay's files only, as if they were the disk (a file not among
+/// them is missing).
+struct ModelFileSource {
+  ModelFileSet* record = nullptr;
+  const ModelFileSet* replay = nullptr;
+};
+
+/// Reads the model file at file (from source: the disk unless it says otherwise). Replaying a
+/// set recorded by the same reading gives the same model, bit for bit.
 /// @throws ModelError, the message "FILE: ..." for: a file that is missing or unreadable (the
 ///         system's reason), a directory, a device or a pipe (not a regular file), a file
 ///         Assimp cannot parse or validate (its message, which names no line: an index out of
@@ -81,7 +106,8 @@ struct ModelFile {
 ///         memory cannot hold, non-finite coordinates (TriangleMesh's message), a degenerate
 ///         transform; and, in a build without Assimp, "reading model files needs Assimp:
 ///         install libassimp-dev (scripts/deps.sh installs it)".
-ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options);
+ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options,
+                        const ModelFileSource& source = {});
 
 /// The same for a model file's bytes in memory. formatHint is the file's extension without the
 /// dot ("obj", "ply", "stl"); sourceName is what the messages call the file. Files the model

@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenefile/ModelFile.h"
 #include "scenefile/SceneDocument.h"
 
 namespace rt {
@@ -46,8 +47,14 @@ struct SceneError : std::runtime_error {
 
 /// Reads a scene from JSON text. sourceName is what the messages call the file; its folder is
 /// where a model file's relative path starts (a mesh's "file"; none: the current directory).
+/// models says where the model files are read (the disk, recorded, or replayed from memory).
 /// @throws SceneError for malformed JSON or anything the format or a constructor rejects.
-SceneDocument parseScene(std::string_view text, const std::string& sourceName);
+SceneDocument parseScene(std::string_view text, const std::string& sourceName,
+                         const ModelFileSource& models = {});
+
+/// The text of the scene file at path (at most MAX_SCENE_FILE_BYTES), as loadScene reads it.
+/// @throws SceneError "cannot read PATH: reason".
+std::string readSceneText(const std::string& path);
 
 /// Reads the file at path (at most MAX_SCENE_FILE_BYTES) and parses it.
 /// @throws SceneError "cannot read PATH: reason" when the file cannot be read, and as

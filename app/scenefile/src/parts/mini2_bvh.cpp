@@ -212,7 +212,7 @@ void buildModelMesh(const Node& n, GeometryFields& f, MeshFields& m) {
       given.is_absolute() ? given : fs::path(n.context().source).parent_path() / given;
   ModelFile model = [&] {
     try {
-      return readModelFile(path, {m.smooth, m.transform});
+      return readModelFile(path, {m.smooth, m.transform}, n.context().models);
     } catch (const ModelError& e) {
       fileNode.fail(e.what());
     }
