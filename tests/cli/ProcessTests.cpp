@@ -73,7 +73,7 @@ TEST(RenderProcessTests, defaultOutputIsSceneDotPngInTheCurrentDirectory) {
   // TC01: without -o, NAME.png appears in the working directory
   const test::RtResult r =
       runRt({"render", "two-color", "--width", "4", "--height", "3", "--silent"},
-            {.cwd = dir, .asUnprivileged = false});
+            {.cwd = dir, .asUnprivileged = false, .path = {}});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(readPng(dir + "/two-color.png").width, 4);
 }
@@ -183,7 +183,7 @@ TEST(RenderProcessTests, readOnlyDirectoryKeepsTheExistingFile) {
   ::chmod(dir.c_str(), 0555);
   // TC01: exit 2 before rendering (no progress line), the reason named, the file untouched
   const test::RtResult r =
-      runRt({"render", "two-color", "-o", out}, {.cwd = "", .asUnprivileged = true});
+      runRt({"render", "two-color", "-o", out}, {.cwd = "", .asUnprivileged = true, .path = {}});
   ::chmod(dir.c_str(), 0755);
   const std::string kept = readFile(out);
   const auto entries = std::distance(fs::directory_iterator(dir), fs::directory_iterator());

@@ -56,6 +56,11 @@ std::string readAll(int fd) {
 RtResult runRt(const std::vector<std::string>& args, const RtOptions& options) {
   std::vector<std::string> all{RT_EXE};
   all.insert(all.end(), args.begin(), args.end());
+  return runProgram(all, options);
+}
+
+RtResult runProgram(const std::vector<std::string>& command, const RtOptions& options) {
+  std::vector<std::string> all = command;
   std::vector<char*> argv = argvOf(all);
   const int outFd = captureFile(), errFd = captureFile();
   const pid_t pid = ::fork();
@@ -63,6 +68,7 @@ RtResult runRt(const std::vector<std::string>& args, const RtOptions& options) {
     ::dup2(outFd, STDOUT_FILENO);
     ::dup2(errFd, STDERR_FILENO);
     if (!options.cwd.empty() && ::chdir(options.cwd.c_str()) != 0) ::_exit(126);
+    if (!options.path.empty()) ::setenv("PATH", options.path.c_str(), 1);
     if (options.asUnprivileged && ::geteuid() == 0) {
       if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(125);
     }
@@ -77,9 +83,14 @@ RtResult runRt(const std::vector<std::string>& args, const RtOptions& options) {
   return r;
 }
 
-RtChild::RtChild(const std::vector<std::string>& args) {
+RtChild::RtChild(const std::vector<std::string>& args) : RtChild(Program{[&] {
   std::vector<std::string> all{RT_EXE};
   all.insert(all.end(), args.begin(), args.end());
+  return all;
+}()}) {}
+
+RtChild::RtChild(const Program& program) {
+  std::vector<std::string> all = program.argv;
   std::vector<char*> argv = argvOf(all);
   int fds[2];
   if (::pipe(fds) != 0) throw std::runtime_error("pipe failed");

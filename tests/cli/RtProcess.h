@@ -18,15 +18,25 @@ struct RtResult {
 struct RtOptions {
   std::string cwd;              ///< working directory; empty: the test's
   bool asUnprivileged = false;  ///< when running as root, drop to nobody (65534) first
+  std::string path;             ///< the child's PATH; empty: the test's
 };
 
 /// Runs RT_EXE with args and waits for it.
 RtResult runRt(const std::vector<std::string>& args, const RtOptions& options = {});
 
+/// Runs the program argv[0] (a path) with the arguments after it, and waits for it.
+RtResult runProgram(const std::vector<std::string>& argv, const RtOptions& options = {});
+
+/// A whole command line, program first: what RtChild runs instead of RT_EXE.
+struct Program {
+  std::vector<std::string> argv;
+};
+
 /// A running `rt` whose stderr the test reads line by line (to interrupt it at a known point).
 class RtChild {
  public:
   explicit RtChild(const std::vector<std::string>& args);
+  explicit RtChild(const Program& program);
   ~RtChild();
   RtChild(const RtChild&) = delete;
   RtChild& operator=(const RtChild&) = delete;
@@ -36,6 +46,7 @@ class RtChild {
   void signal(int sig);
   /// Waits for the process, drains stderr, returns the exit code (-1 if killed by a signal).
   int wait();
+  pid_t pid() const { return pid_; }
   const std::string& err() const { return err_; }
 
  private:

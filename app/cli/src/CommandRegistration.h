@@ -17,6 +17,7 @@ namespace rt::cli {
 
 void addListCommand(CommandLine& rt);
 void addRenderCommand(CommandLine& rt);
+void addAnimateCommand(CommandLine& rt);
 void addProbeCommand(CommandLine& rt);
 void addExportCommand(CommandLine& rt);
 void addCompareCommand(CommandLine& rt);

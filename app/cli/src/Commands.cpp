@@ -54,6 +54,7 @@ CommandLine makeCommandLine() {
   CommandLine rt("rt", versionString() + kDescription, kFooter, versionString());
   addListCommand(rt);
   addRenderCommand(rt);
+  addAnimateCommand(rt);
   addProbeCommand(rt);
   addExportCommand(rt);
   addCompareCommand(rt);
@@ -75,6 +76,25 @@ void addListCommand(CommandLine& rt) {
 
 std::string versionString() { return std::string("rt ") + RT_VERSION; }
 
+ErrorReport describeError(std::exception_ptr error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const UsageError& e) {
+    return {EXIT_BAD_INPUT, e.what()};
+  } catch (const SceneError& e) {
+    return {EXIT_BAD_INPUT, e.what()};
+  } catch (const std::invalid_argument& e) {
+    // A scene or camera the engine refuses (the constructors name the argument and the value).
+    return {EXIT_BAD_INPUT, e.what()};
+  } catch (const std::bad_alloc&) {
+    return {EXIT_FAILURE_RUNTIME, "out of memory"};
+  } catch (const std::exception& e) {
+    return {EXIT_FAILURE_RUNTIME, e.what()};
+  } catch (...) {
+    return {EXIT_FAILURE_RUNTIME, "an unknown error"};
+  }
+}
+
 int runRt(std::span<const std::string> args, const Io& io) {
   try {
     CommandLine rt = makeCommandLine();
@@ -84,22 +104,10 @@ int runRt(std::span<const std::string> args, const Io& io) {
       return EXIT_OK;
     }
     return parsed.run(io);
-  } catch (const UsageError& e) {
-    io.err << "rt: " << e.what() << "\n";
-    return EXIT_BAD_INPUT;
-  } catch (const SceneError& e) {
-    io.err << "rt: " << e.what() << "\n";
-    return EXIT_BAD_INPUT;
-  } catch (const std::invalid_argument& e) {
-    // A scene or camera the engine refuses (the constructors name the argument and the value).
-    io.err << "rt: " << e.what() << "\n";
-    return EXIT_BAD_INPUT;
-  } catch (const std::bad_alloc&) {
-    io.err << "rt: out of memory\n";
-    return EXIT_FAILURE_RUNTIME;
-  } catch (const std::exception& e) {
-    io.err << "rt: " << e.what() << "\n";
-    return EXIT_FAILURE_RUNTIME;
+  } catch (...) {
+    const ErrorReport report = describeError(std::current_exception());
+    io.err << "rt: " << report.message << "\n";
+    return report.code;
   }
 }
 
@@ -111,10 +119,16 @@ const BuiltinScene& requireBuiltinScene(std::string_view name, std::string_view 
                    std::string(hint) + ")");
 }
 
-SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params) {
-  if (scene.ends_with(".json") && !findBuiltinScene(scene)) {
+bool isSceneFileArgument(std::string_view scene) {
+  return scene.ends_with(".json") && !findBuiltinScene(scene);
+}
+
+SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params,
+                                const SceneFileInput* input) {
+  if (isSceneFileArgument(scene)) {
     if (!params.empty())
       throw UsageError("--param: a scene file has no parameters (only built-in scenes have)");
+    if (input) return parseScene(input->text, std::string(scene), input->models);
     return loadScene(std::string(scene));
   }
   return makeBuiltinScene(

@@ -66,8 +66,9 @@ std::optional<double> TimeLeft::secondsLeft() const {
 ProgressMonitor::ProgressMonitor(std::ostream& err, Style style,
                                  const std::atomic<std::uint64_t>& done,
                                  const std::atomic<std::uint64_t>& rays, std::uint64_t total,
-                                 std::uint64_t rowLength)
+                                 std::uint64_t rowLength, std::string program)
     : err_(err),
+      program_(std::move(program)),
       style_(style),
       done_(done),
       rays_(rays),
@@ -119,7 +120,7 @@ void ProgressMonitor::report(bool last) {
     if (decile > lastDecile_) {
       const std::string figures = rateAndTimeLeft(done, elapsed);
       for (int d = lastDecile_ + 1; d <= decile; ++d) {
-        err_ << "rt: rendering " << d * 10 << "%";
+        err_ << program_ << ": rendering " << d * 10 << "%";
         if (!figures.empty()) err_ << " (" << figures << ")";
         err_ << "\n";
       }
@@ -132,7 +133,7 @@ void ProgressMonitor::report(bool last) {
   if (rows != lastRow_ || last) {
     lastRow_ = rows;
     std::ostringstream line;
-    line << "\rrt: rendering " << (done * 100 / total_) << "% (" << rows << "/"
+    line << "\r" << program_ << ": rendering " << (done * 100 / total_) << "% (" << rows << "/"
          << total_ / rowLength_ << " rows";
     if (const std::string figures = rateAndTimeLeft(done, elapsed); !figures.empty())
       line << ", " << figures;

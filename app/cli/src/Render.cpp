@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <sstream>
 
 #include "CommandRegistration.h"
 #include "camera/Camera.h"
@@ -15,21 +16,13 @@
 #include "cli/CommandLine.h"
 #include "cli/Progress.h"
 #include "cli/Registry.h"
+#include "cli/RenderCommand.h"
 #include "cli/RenderRequest.h"
 #include "cli/Tracers.h"
 
 namespace rt::cli {
 
 namespace {
-
-/// rt render's arguments, as the command line binds them.
-struct RenderArgs {
-  SceneArguments scene;
-  std::optional<std::string> output;
-  std::optional<int> gridLines;  ///< --grid-lines N: overrides render.gridLines
-  bool quiet = false;            ///< no header, no progress; the final timing line stays
-  bool silent = false;           ///< nothing but errors
-};
 
 int render(const RenderArgs& args, const Io& io) {
   // Everything is checked before the first ray (the scene, the options, the output path, the
@@ -77,66 +70,91 @@ int render(const RenderArgs& args, const Io& io) {
            << " pixels; nothing written to " << output << "\n";
     return EXIT_INTERRUPTED;
   }
-  // The course's grid lines go on the finished image (its printGrid after renderImage), so they
-  // change no ray and no count.
-  if (const int every = args.gridLines.value_or(doc.render.gridLines); every > 0)
-    setup.camera.printGrid(every, doc.render.gridColor);
-  PngImageWriter().write(image, output);
-  const RayCounts& counts = outcome.counts;
-  if (!args.silent) {
-    // The rate of primary rays (pixels) compares across tracers; the rays of every kind per
-    // second, named when the tracer cast secondary or shadow rays, compare the work done.
-    const auto perSecond = [seconds](std::uint64_t n) {
-      return static_cast<std::uint64_t>(seconds > 0 ? static_cast<double>(n) / seconds : 0);
-    };
-    io.err << "rt: wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
-           << counts.primary << " primary rays";
-    if (counts.secondary > 0) io.err << " (+" << counts.secondary << " reflected/refracted)";
-    if (counts.shadow > 0) io.err << " (+" << counts.shadow << " shadow)";
-    io.err << " in " << formatDuration(seconds);
-    if (outcome.threads > 1) io.err << " on " << outcome.threads << " threads";
-    io.err << " (" << perSecond(counts.primary) << " primary rays/s";
-    if (counts.total() > counts.primary) io.err << ", " << perSecond(counts.total()) << " rays/s";
-    io.err << ")\n";
-  }
+  finishImage(setup.camera, doc, args.gridLines, output);
+  if (!args.silent)
+    io.err << "rt: "
+           << renderSummary(output, nX, nY, kind, outcome.counts, seconds,
+                            outcome.threads > 1
+                                ? "on " + std::to_string(outcome.threads) + " threads"
+                                : "")
+           << "\n";
   return EXIT_OK;
 }
 
 }  // namespace
 
-void addRenderCommand(CommandLine& rt) {
+void finishImage(Camera& camera, const SceneDocument& doc, const std::optional<int>& gridLines,
+                 const std::string& path) {
+  // The course's grid lines go on the finished image (its printGrid after renderImage), so they
+  // change no ray and no count.
+  if (const int every = gridLines.value_or(doc.render.gridLines); every > 0)
+    camera.printGrid(every, doc.render.gridColor);
+  PngImageWriter().write(camera.image(), path);
+}
+
+std::string renderSummary(const std::string& output, int nX, int nY, const TracerKind& kind,
+                          const RayCounts& counts, double seconds, const std::string& where) {
+  // The rate of primary rays (pixels) compares across tracers; the rays of every kind per
+  // second, named when the tracer cast secondary or shadow rays, compare the work done.
+  const auto perSecond = [seconds](std::uint64_t n) {
+    return static_cast<std::uint64_t>(seconds > 0 ? static_cast<double>(n) / seconds : 0);
+  };
+  std::ostringstream os;
+  os << "wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
+     << counts.primary << " primary rays";
+  if (counts.secondary > 0) os << " (+" << counts.secondary << " reflected/refracted)";
+  if (counts.shadow > 0) os << " (+" << counts.shadow << " shadow)";
+  os << " in " << formatDuration(seconds);
+  if (!where.empty()) os << " " << where;
+  os << " (" << perSecond(counts.primary) << " primary rays/s";
+  if (counts.total() > counts.primary) os << ", " << perSecond(counts.total()) << " rays/s";
+  os << ")";
+  return os.str();
+}
+
+std::string renderCommandDetails() {
   std::string tracers;
   for (const TracerKind& t : tracerKinds())
     tracers += "  " + std::string(t.name) + std::string(9 - t.name.size(), ' ') + "(" +
                std::string(t.stage.substr(0, t.stage.find('_'))) + ") " +
                std::string(t.description) + "\n";
-  const auto [command, args] = rt.addCommand(
-      "render", "render a scene to a PNG image",
-      "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
-      "options override what the scene sets. Without -o the image is written to SCENE.png\n"
-      "in the current directory (for a scene file: its name with .png for .json).\n\n"
-      "Tracers (a built-in scene's default is its stage's; a file's is render.tracer):\n" +
-          tracers +
-          "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
-          "resolution and that the output's directory can be written to. Progress goes to\n"
-          "stderr (a percentage on a terminal, a line per 10% otherwise, with the rays per\n"
-          "second and the time left), then the wall time, the threads and the rates of\n"
-          "primary rays and of all rays. The image is written to a temporary file and\n"
-          "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
-          "existing FILE.png as it was, and exits with code 130.\n",
-      render);
-  addOptional(*command, "-o,--output", args->output,
-              "where to write the image (default: SCENE.png)", "FILE.png");
-  addSceneArguments(*command, args->scene, "image width in pixels, 1..32768 (default: the scene's)",
+  return "SCENE is a built-in scene's name (see rt list) or a scene file ending in .json; the\n"
+         "options override what the scene sets. Without -o the image is written to SCENE.png\n"
+         "in the current directory (for a scene file: its name with .png for .json).\n\n"
+         "Tracers (a built-in scene's default is its stage's; a file's is render.tracer):\n" +
+         tracers +
+         "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
+         "resolution and that the output's directory can be written to. Progress goes to\n"
+         "stderr (a percentage on a terminal, a line per 10% otherwise, with the rays per\n"
+         "second and the time left), then the wall time, the threads and the rates of\n"
+         "primary rays and of all rays. The image is written to a temporary file and\n"
+         "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
+         "existing FILE.png as it was, and exits with code 130.\n";
+}
+
+void addRenderOptions(CLI::App& command, RenderArgs& into) {
+  addOptional(command, "-o,--output", into.output, "where to write the image (default: SCENE.png)",
+              "FILE.png");
+  addSceneArguments(command, into.scene, "image width in pixels, 1..32768 (default: the scene's)",
                     "image height in pixels, 1..32768 (default: the scene's)",
                     "which stage's tracer renders it (default: the scene's)");
-  addOptional(*command, "--grid-lines", args->gridLines,
+  addGridLinesOption(command, into.gridLines);
+  command.add_flag("-q,--quiet", into.quiet, "no progress; only the final timing line");
+  command.add_flag("-s,--silent", into.silent, "print nothing but errors");
+}
+
+void addGridLinesOption(CLI::App& command, std::optional<int>& into) {
+  addOptional(command, "--grid-lines", into,
               "draw the course's grid lines every N pixels on the image, 0..32768; 0: none "
               "(default: the scene's render.gridLines; their colour: render.gridColor, yellow)",
               "N")
       ->transform(integerValidator(0, Image::MAX_SIDE));
-  command->add_flag("-q,--quiet", args->quiet, "no progress; only the final timing line");
-  command->add_flag("-s,--silent", args->silent, "print nothing but errors");
+}
+
+void addRenderCommand(CommandLine& rt) {
+  const auto [command, args] =
+      rt.addCommand("render", "render a scene to a PNG image", renderCommandDetails(), render);
+  addRenderOptions(*command, *args);
 }
 
 }  // namespace rt::cli

@@ -42,7 +42,7 @@ RenderSetup RenderRequest::build() const {
 }
 
 SceneDocument sceneFromArguments(const SceneArguments& arguments) {
-  SceneDocument doc = loadSceneArgument(arguments.argument, arguments.params);
+  SceneDocument doc = loadSceneArgument(arguments.argument, arguments.params, arguments.fileInput);
   if (arguments.view) {
     std::vector<std::string_view> names;
     const NamedView* chosen = nullptr;
@@ -58,36 +58,41 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
     }
     doc.camera = chosen->camera;
   }
-  CameraSpec& c = doc.camera;
-  constexpr int kMax = Image::MAX_SIDE;
-  const int nX0 = c.nX, nY0 = c.nY;
-  const auto scaled = [](int given, int num, int den) {
-    return static_cast<int>(
-        std::max<long long>(1, (2LL * given * num + den) / (2LL * den)));  // given·num/den, rounded
-  };
-  if (arguments.width && arguments.height) {
-    c.nX = *arguments.width;
-    c.nY = *arguments.height;
-    // Another aspect ratio than the scene's: the view plane's height follows the image's, so
-    // that pixels stay square and nothing is squashed.
-    if (static_cast<long long>(c.nX) * nY0 != static_cast<long long>(c.nY) * nX0)
-      c.vpHeight = c.vpWidth * c.nY / c.nX;
-  } else if (arguments.width) {
-    c.nX = *arguments.width;
-    c.nY = scaled(c.nX, nY0, nX0);
-  } else if (arguments.height) {
-    c.nY = *arguments.height;
-    c.nX = scaled(c.nY, nX0, nY0);
-  }
-  if (c.nX < 1 || c.nX > kMax || c.nY < 1 || c.nY > kMax)
-    throw UsageError("the image's resolution " + std::to_string(c.nX) + "x" + std::to_string(c.nY) +
-                     " is outside 1.." + std::to_string(kMax) + " per side");
+  applyResolution(doc.camera, arguments.width, arguments.height);
   if (arguments.tracer) doc.render.tracer = *arguments.tracer;
   if (arguments.seed) doc.render.seed = static_cast<std::uint64_t>(*arguments.seed);
   if (arguments.settings.threads) doc.render.threads = *arguments.settings.threads;
   if (arguments.settings.accel) doc.render.accel = *arguments.settings.accel;
   findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
   return doc;
+}
+
+void applyResolution(CameraSpec& camera, const std::optional<int>& width,
+                     const std::optional<int>& height) {
+  CameraSpec& c = camera;
+  constexpr int kMax = Image::MAX_SIDE;
+  const int nX0 = c.nX, nY0 = c.nY;
+  const auto scaled = [](int given, int num, int den) {
+    return static_cast<int>(
+        std::max<long long>(1, (2LL * given * num + den) / (2LL * den)));  // given·num/den, rounded
+  };
+  if (width && height) {
+    c.nX = *width;
+    c.nY = *height;
+    // Another aspect ratio than the scene's: the view plane's height follows the image's, so
+    // that pixels stay square and nothing is squashed.
+    if (static_cast<long long>(c.nX) * nY0 != static_cast<long long>(c.nY) * nX0)
+      c.vpHeight = c.vpWidth * c.nY / c.nX;
+  } else if (width) {
+    c.nX = *width;
+    c.nY = scaled(c.nX, nY0, nX0);
+  } else if (height) {
+    c.nY = *height;
+    c.nX = scaled(c.nY, nX0, nY0);
+  }
+  if (c.nX < 1 || c.nX > kMax || c.nY < 1 || c.nY > kMax)
+    throw UsageError("the image's resolution " + std::to_string(c.nX) + "x" + std::to_string(c.nY) +
+                     " is outside 1.." + std::to_string(kMax) + " per side");
 }
 
 // An Image keeps a Color (three doubles) per pixel, and the PNG writer an RGB byte triple.

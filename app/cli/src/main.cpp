@@ -26,9 +26,10 @@ extern "C" void onInterrupt(int) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
-  // Only the commands that render (rt render, and mini project 2's rt bench) are worth stopping
-  // gracefully; the other commands end at once, as usual.
-  if (!args.empty() && (args.front() == "render" || args.front() == "bench"))
+  // Only the commands that render (rt render, rt animate, and mini project 2's rt bench) are
+  // worth stopping gracefully; the other commands end at once, as usual.
+  if (!args.empty() &&
+      (args.front() == "render" || args.front() == "animate" || args.front() == "bench"))
     std::signal(SIGINT, onInterrupt);
   const rt::cli::Io io{std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1, &gStop};
   const int code = rt::cli::runRt(args, io);

@@ -14,6 +14,7 @@
 /// Exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 130 interrupted (Ctrl-C).
 
 #include <atomic>
+#include <exception>
 #include <iosfwd>
 #include <span>
 #include <string>
@@ -22,6 +23,7 @@
 #include "primitives/Color.h"
 #include "primitives/Ray.h"
 #include "scenefile/SceneDocument.h"
+#include "scenefile/ModelFile.h"
 
 namespace rt::cli {
 
@@ -40,6 +42,15 @@ struct Io {
   const std::atomic<bool>* stop = nullptr;
 };
 
+/// What an error means for the user: the exit code (EXIT_BAD_INPUT for bad usage, a bad scene
+/// or a value the engine refuses; EXIT_FAILURE_RUNTIME otherwise) and the message ("out of
+/// memory" for std::bad_alloc), as rt prints them after "rt: ".
+struct ErrorReport {
+  int code = EXIT_FAILURE_RUNTIME;
+  std::string message;
+};
+ErrorReport describeError(std::exception_ptr error);
+
 /// Runs `rt` with args (without the program's name) and returns the exit code. Errors are one
 /// line on io.err starting with "rt: ".
 int runRt(std::span<const std::string> args, const Io& io);
@@ -49,11 +60,24 @@ std::string versionString();
 
 // ---- Pieces shared by the commands (and tested on their own) ----
 
+/// A scene file's text and where its model files come from, given instead of the disk: what a
+/// rank of rt-mpi received from rank 0 (the models replayed), or what rank 0 read and records.
+struct SceneFileInput {
+  std::string text;        ///< the scene file's contents
+  ModelFileSource models;  ///< the disk, recorded, or replayed
+};
+
 /// A built-in scene's name (with its --param values) or a path ending in ".json", as a document.
+/// With input, a scene file is parsed from input->text (the path is then only its name and the
+/// folder its model files' paths start from) and its models read as input->models says.
 /// @throws UsageError for an unknown name (suggesting the nearest one) or a bad parameter; the
 ///         scene-file library's SceneError (its message names file, line and column) for a bad
 ///         file.
-SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params = {});
+SceneDocument loadSceneArgument(std::string_view scene, std::span<const std::string> params = {},
+                                const SceneFileInput* input = nullptr);
+
+/// Whether the scene argument names a scene file (it ends in .json and is no built-in's name).
+bool isSceneFileArgument(std::string_view scene);
 
 /// Where `rt render SCENE` writes without -o: NAME.png for a built-in scene, the file's name
 /// with .png instead of .json for a scene file; in the current directory either way.
@@ -67,6 +91,8 @@ struct OutputKind {
 inline constexpr OutputKind PNG_IMAGE{".png",
                                       "the image is written as PNG, so its name must end in .png"};
 inline constexpr OutputKind SCENE_FILE{".json", "a scene file's name must end in .json"};
+inline constexpr OutputKind MP4_VIDEO{".mp4",
+                                      "the video is encoded as MP4, so its name must end in .mp4"};
 
 /// Refuses, before any work is done, an output path that cannot be written, in this order: an
 /// existing directory, a path that names no file, a name without kind's ending, a missing

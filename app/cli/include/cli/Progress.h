@@ -74,9 +74,10 @@ class ProgressMonitor {
   /// @param total the image's pixels
   /// @param rays the rays of every kind cast so far (added with the pixels), for the rate
   /// @param rowLength pixels per image row (nX), to report rows on a terminal.
+  /// @param program what each line starts with ("rt: rendering 10%")
   ProgressMonitor(std::ostream& err, Style style, const std::atomic<std::uint64_t>& done,
                   const std::atomic<std::uint64_t>& rays, std::uint64_t total,
-                  std::uint64_t rowLength);
+                  std::uint64_t rowLength, std::string program = "rt");
   ~ProgressMonitor();
   ProgressMonitor(const ProgressMonitor&) = delete;
   ProgressMonitor& operator=(const ProgressMonitor&) = delete;
@@ -92,6 +93,7 @@ class ProgressMonitor {
   std::string rateAndTimeLeft(std::uint64_t done, double elapsed) const;
 
   std::ostream& err_;
+  std::string program_;
   Style style_;
   const std::atomic<std::uint64_t>& done_;
   const std::atomic<std::uint64_t>& rays_;

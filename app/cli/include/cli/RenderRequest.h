@@ -31,6 +31,8 @@
 
 namespace rt::cli {
 
+struct SceneFileInput;
+
 /// The scene argument and the options that change the scene, which render, probe and bench
 /// share.
 struct SceneArguments {
@@ -41,6 +43,8 @@ struct SceneArguments {
   std::optional<std::string> tracer;
   std::optional<int> seed;
   SettingOverrides settings;  ///< the options stages add (--threads, --accel)
+  /// A scene file's text and models given instead of the disk (rt-mpi); null: the disk.
+  const SceneFileInput* fileInput = nullptr;
 };
 
 /// What the command does with the request, which decides what is checked.
@@ -100,6 +104,12 @@ RenderRequest resolveRenderRequest(const SceneArguments& arguments, const Reques
 /// the scene's aspect ratio; both given with another aspect: the view plane's height follows,
 /// so pixels stay square); the tracer known. @throws UsageError, SceneError.
 SceneDocument sceneFromArguments(const SceneArguments& arguments);
+
+/// --width and --height applied to camera as sceneFromArguments does (one given: the other
+/// keeps the camera's aspect ratio; both with another aspect: the view plane's height follows).
+/// @throws UsageError for a resolution outside 1..Image::MAX_SIDE per side.
+void applyResolution(CameraSpec& camera, const std::optional<int>& width,
+                     const std::optional<int>& height);
 
 /// Refuses an nX x nY image that cannot fit in this machine's memory.
 /// @throws UsageError naming the size and the memory.

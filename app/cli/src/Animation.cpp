@@ -1,0 +1,312 @@
+// rt animate's plan: the camera path, the frames' folder and the video, checked before any frame.
+#include "cli/Animation.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+#include "camera/AtomicFile.h"
+#include "cli/CommandLine.h"
+#include "cli/Commands.h"
+#include "common/NearestName.h"
+
+namespace rt::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// v turned by angle (radians) about the unit axis k (Rodrigues' formula).
+Double3 rotated(const Double3& v, const Double3& k, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return v * c + k.cross(v) * s + k * (k.dot(v) * (1 - c));
+}
+
+Point lerp(const Point& a, const Point& b, double t) {
+  return Point(a.xyz() + (b.xyz() - a.xyz()) * t);
+}
+double lerp(double a, double b, double t) { return a + (b - a) * t; }
+Vector lerpUnit(const Vector& a, const Vector& b, double t) {
+  return Vector(a.xyz() + (b.xyz() - a.xyz()) * t).normalized();
+}
+
+/// The unit direction a camera looks along.
+Vector directionOf(const CameraSpec& c) {
+  return c.target ? (*c.target - c.location).normalized() : c.to->normalized();
+}
+
+/// The orbit's centre of a camera.
+Point orbitCentre(const CameraSpec& c) {
+  if (c.target) return *c.target;
+  const double d = c.focalDistance > 0 ? c.focalDistance : c.vpDistance;
+  return c.location + c.to->normalized() * d;
+}
+
+/// The pieces of list between separators ("a,b" -> a, b; "" -> one empty piece).
+std::vector<std::string> split(const std::string& list, char separator) {
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = list.find(separator, start);
+    names.push_back(list.substr(start, comma - start));
+    if (comma == std::string::npos) return names;
+    start = comma + 1;
+  }
+}
+
+}  // namespace
+
+std::vector<CameraSpec> orbitCameras(const CameraSpec& camera, double degrees, int frames) {
+  std::vector<CameraSpec> cameras;
+  cameras.reserve(static_cast<std::size_t>(frames));
+  const Point centre = orbitCentre(camera);
+  const Double3 axis = camera.up.normalized().xyz();
+  for (int k = 0; k < frames; ++k) {
+    CameraSpec c = camera;
+    const double angle = degrees * k / frames * kPi / 180;
+    if (angle != 0) {  // frame 0 is the camera itself, bit for bit
+      c.location = Point(centre.xyz() + rotated(camera.location.xyz() - centre.xyz(), axis, angle));
+      if (c.to) c.to = Vector(rotated(camera.to->xyz(), axis, angle));
+    }
+    cameras.push_back(c);
+  }
+  return cameras;
+}
+
+std::vector<CameraSpec> viewPathCameras(const std::vector<CameraSpec>& views, int frames) {
+  if (views.size() < 2) throw std::invalid_argument("viewPathCameras: fewer than two views");
+  std::vector<CameraSpec> cameras;
+  cameras.reserve(static_cast<std::size_t>(frames));
+  const long long segments = static_cast<long long>(views.size()) - 1;
+  for (int k = 0; k < frames; ++k) {
+    // u = k·segments/(frames−1) = seg + t, in integers so that a view's frame is found exactly.
+    const long long num = frames == 1 ? 0 : k * segments, den = frames == 1 ? 1 : frames - 1;
+    const std::size_t seg = static_cast<std::size_t>(num / den);
+    const long long rem = num % den;
+    if (rem == 0) {
+      cameras.push_back(views[seg]);
+      continue;
+    }
+    const double t = static_cast<double>(rem) / static_cast<double>(den);
+    const CameraSpec &a = views[seg], &b = views[seg + 1];
+    CameraSpec c = a;
+    c.location = lerp(a.location, b.location, t);
+    Vector up = lerpUnit(a.up.normalized(), b.up.normalized(), t);
+    if (a.target && b.target) {
+      c.target = lerp(*a.target, *b.target, t);
+      c.to.reset();
+    } else {
+      const Vector to = lerpUnit(directionOf(a), directionOf(b), t);
+      up = (up - to * up.dot(to)).normalized();  // orthogonal to the direction, as it must be
+      c.to = to;
+      c.target.reset();
+    }
+    c.up = up;
+    c.vpWidth = lerp(a.vpWidth, b.vpWidth, t);
+    c.vpHeight = lerp(a.vpHeight, b.vpHeight, t);
+    c.vpDistance = lerp(a.vpDistance, b.vpDistance, t);
+    c.aperture = lerp(a.aperture, b.aperture, t);
+    c.focalDistance = lerp(a.focalDistance, b.focalDistance, t);
+    cameras.push_back(c);
+  }
+  return cameras;
+}
+
+std::string AnimationPlan::framePath(int k) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame-%0*d.png", frameDigits(), k);
+  return (directory / name).string();
+}
+
+int AnimationPlan::frameDigits() const {
+  const int last = cameras.empty() ? 0 : static_cast<int>(cameras.size()) - 1;
+  return std::max(4, static_cast<int>(std::to_string(last).size()));
+}
+
+std::optional<std::string> findOnPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return std::nullopt;
+  for (const std::string& dir : split(path, ':')) {
+    if (dir.empty()) continue;
+    const fs::path candidate = fs::path(dir) / name;
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
+      return candidate.string();
+  }
+  return std::nullopt;
+}
+
+AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
+  if (args.orbit.has_value() == args.through.has_value())
+    throw UsageError(args.orbit ? "--orbit and --through: give one camera path, not both"
+                                : "give a camera path: --orbit DEGREES or --through VIEW,VIEW,...");
+  if (args.orbit && !std::isfinite(*args.orbit))
+    throw UsageError("--orbit: expected a finite number of degrees, got " +
+                     std::to_string(*args.orbit));
+  if (args.frame && (*args.frame < 0 || *args.frame >= args.frames))
+    throw UsageError("--frame: expected a frame from 0 to " + std::to_string(args.frames - 1) +
+                     " (--frames " + std::to_string(args.frames) + "), got " +
+                     std::to_string(*args.frame));
+  if (args.video && args.frame)
+    throw UsageError("--video and --frame: a video needs every frame; render it without --frame");
+  if (!(args.fps > 0) || !std::isfinite(args.fps) || args.fps > 1000)
+    throw UsageError("--fps: expected a number of frames per second in (0, 1000], got " +
+                     std::to_string(args.fps));
+
+  AnimationPlan plan{resolveRenderRequest(args.scene, {.writesImage = false,
+                                                       .makesImage = true,
+                                                       .renders = true}),
+                     {},
+                     {},
+                     {},
+                     args.video,
+                     "",
+                     args.fps};
+  const SceneDocument& doc = plan.request.doc;
+  if (args.orbit) {
+    plan.cameras = orbitCameras(doc.camera, *args.orbit, args.frames);
+  } else {
+    std::vector<std::string_view> known;
+    for (const NamedView& v : doc.views) known.push_back(v.name);
+    std::vector<std::string> names;
+    if (*args.through == "all") {
+      names.assign(known.begin(), known.end());
+    } else {
+      names = split(*args.through, ',');
+    }
+    if (names.size() < 2)
+      throw UsageError("--through: a path needs at least two views, got " +
+                       std::to_string(names.size()) + " ('" + *args.through + "'; " +
+                       (known.empty() ? std::string("the scene has none")
+                                      : "the scene's views: " + joinNames(known)) +
+                       ")");
+    std::vector<CameraSpec> views;
+    for (const std::string& name : names) {
+      const NamedView* found = nullptr;
+      for (const NamedView& v : doc.views)
+        if (v.name == name) found = &v;
+      if (!found)
+        throw UsageError("--through: the scene has no view '" + name + "'" +
+                         didYouMean(name, known) + " (" +
+                         (known.empty() ? std::string("it has none")
+                                        : "its views: " + joinNames(known)) +
+                         ")");
+      CameraSpec c = found->camera;
+      // A view gets --width/--height as `rt render --view` gives them, so that a frame on a
+      // view is that render's image; a view whose size then differs from the scene camera's
+      // is brought to it (every frame of an animation has one size).
+      applyResolution(c, args.scene.width, args.scene.height);
+      if (c.nX != doc.camera.nX || c.nY != doc.camera.nY)
+        applyResolution(c, doc.camera.nX, doc.camera.nY);
+      views.push_back(c);
+    }
+    plan.cameras = viewPathCameras(views, args.frames);
+  }
+  if (args.frame) {
+    plan.frames = {*args.frame};
+  } else {
+    for (int k = 0; k < args.frames; ++k) plan.frames.push_back(k);
+  }
+
+  // The folder: created when missing (its parent must exist), then a frame's file tried there.
+  const std::string dir = args.output.value_or(
+      (isSceneFileArgument(args.scene.argument) ? fs::path(args.scene.argument).stem().string()
+                                                : args.scene.argument) +
+      "-frames");
+  plan.directory = dir;
+  if (!writes) return plan;
+  std::error_code ec;
+  if (fs::exists(plan.directory, ec) && !fs::is_directory(plan.directory, ec))
+    throw UsageError("-o: cannot write frames into '" + dir + "': it is not a directory");
+  const fs::path parent =
+      plan.directory.parent_path().empty() ? fs::path(".") : plan.directory.parent_path();
+  if (!fs::is_directory(parent, ec))
+    throw UsageError("-o: cannot write frames into '" + dir + "': the directory '" +
+                     parent.string() + "' does not exist");
+  if (args.video) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
+  if (args.video) {
+    const std::optional<std::string> ffmpeg = findOnPath("ffmpeg");
+    if (!ffmpeg)
+      throw UsageError(
+          "--video: encoding a video needs ffmpeg, which is not on PATH; install it (apt-get "
+          "install ffmpeg, or scripts/deps.sh --video), or leave out --video to write the frames "
+          "only");
+    plan.ffmpeg = *ffmpeg;
+  }
+  if (!fs::exists(plan.directory, ec) && !fs::create_directory(plan.directory, ec))
+    throw UsageError("-o: cannot create the directory '" + dir + "': " + ec.message());
+  checkOutputWritable(plan.framePath(plan.frames.front()), PNG_IMAGE, "-o");
+  return plan;
+}
+
+void encodeVideo(const AnimationPlan& plan) {
+  // ffmpeg picks the container from the name, so the temporary file keeps the ending.
+  const fs::path video(*plan.video);
+  const fs::path temporary =
+      video.parent_path() / (".rt-" + std::to_string(::getpid()) + "-" + video.filename().string());
+  const std::string pattern =
+      (plan.directory / ("frame-%0" + std::to_string(plan.frameDigits()) + "d.png")).string();
+  std::ostringstream fps;
+  fps.precision(17);
+  fps << plan.fps;
+  // yuv420p, which every player reads, needs an even width and height: odd ones are padded.
+  std::vector<std::string> argv{plan.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin",
+                                "-y", "-framerate", fps.str(), "-i", pattern, "-vf",
+                                "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
+                                "yuv420p", temporary.string()};
+  std::vector<char*> cargv;
+  for (std::string& a : argv) cargv.push_back(a.data());
+  cargv.push_back(nullptr);
+  int pipeFd[2];
+  if (::pipe(pipeFd) != 0)
+    throw std::runtime_error(std::string("cannot start ffmpeg: ") + std::strerror(errno));
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(pipeFd[0]);
+    ::close(pipeFd[1]);
+    throw std::runtime_error(std::string("cannot start ffmpeg: ") + std::strerror(errno));
+  }
+  if (pid == 0) {
+    ::dup2(pipeFd[1], STDERR_FILENO);
+    ::dup2(pipeFd[1], STDOUT_FILENO);
+    ::close(pipeFd[0]);
+    ::close(pipeFd[1]);
+    ::execv(cargv[0], cargv.data());
+    ::_exit(127);
+  }
+  ::close(pipeFd[1]);
+  std::string message;
+  char buffer[4096];
+  ssize_t n;
+  while ((n = ::read(pipeFd[0], buffer, sizeof buffer)) > 0)
+    message.append(buffer, static_cast<std::size_t>(n));
+  ::close(pipeFd[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  std::error_code ec;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    fs::remove(temporary, ec);
+    while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+    throw std::runtime_error("ffmpeg could not encode " + *plan.video + " from " + pattern +
+                             (message.empty() ? std::string(" (no message)") : ": " + message));
+  }
+  fs::rename(temporary, video, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw std::runtime_error("cannot write '" + *plan.video + "': " + ec.message());
+  }
+}
+
+}  // namespace rt::cli

@@ -1,0 +1,217 @@
+// rt animate: the camera paths (in-process, exact where the arithmetic is exact), the frames
+// against single renders, the video through ffmpeg where it is installed, and the refusals.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "RtProcess.h"
+#include "cli/Animation.h"
+#include "cli/CommandLine.h"
+
+namespace rt::cli {
+namespace {
+
+using test::freshDirectory;
+using test::readFile;
+using test::runProgram;
+using test::runRt;
+
+CameraSpec targetCamera() {
+  CameraSpec c;
+  c.location = Point(10, 0, 0);
+  c.target = Point(0, 0, 0);
+  c.up = Vector(0, 1, 0);
+  c.vpWidth = 4;
+  c.vpHeight = 2;
+  c.vpDistance = 5;
+  c.nX = 40;
+  c.nY = 20;
+  return c;
+}
+
+TEST(OrbitCameras, FrameZeroIsTheCameraItselfBitForBit) {
+  CameraSpec c = targetCamera();
+  c.location = Point(0.1, 0.7, 3.3);  // (a - c) + c would round: frame 0 must not
+  const std::vector<CameraSpec> frames = orbitCameras(c, 360, 7);
+  ASSERT_EQ(frames.size(), 7u);
+  EXPECT_EQ(frames[0].location, c.location);
+  EXPECT_EQ(*frames[0].target, *c.target);
+}
+
+TEST(OrbitCameras, QuarterTurnsAboutTheUpAxisThroughTheTarget) {
+  const std::vector<CameraSpec> frames = orbitCameras(targetCamera(), 360, 4);
+  // About +Y by 90 degrees: (10, 0, 0) -> (0, 0, -10); by 180: (-10, 0, 0); by 270: (0, 0, 10).
+  const double expected[4][3] = {{10, 0, 0}, {0, 0, -10}, {-10, 0, 0}, {0, 0, 10}};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(frames[k].location.x(), expected[k][0], 1e-13) << k;
+    EXPECT_EQ(frames[k].location.y(), 0) << k;
+    EXPECT_NEAR(frames[k].location.z(), expected[k][2], 1e-13) << k;
+    EXPECT_EQ(*frames[k].target, Point(0, 0, 0)) << k;
+    EXPECT_EQ(frames[k].up, Vector(0, 1, 0)) << k;
+    EXPECT_EQ(frames[k].nX, 40);
+  }
+}
+
+TEST(OrbitCameras, ACameraGivenByADirectionTurnsItsDirectionAboutItsViewPlanePoint) {
+  CameraSpec c = targetCamera();
+  c.target.reset();
+  c.location = Point(0, 0, 10);
+  c.to = Vector(0, 0, -1);  // the centre: 5 along it (vpDistance), (0, 0, 5)
+  const std::vector<CameraSpec> frames = orbitCameras(c, 360, 2);
+  EXPECT_NEAR(frames[1].location.x(), 0, 1e-13);
+  EXPECT_NEAR(frames[1].location.z(), 0, 1e-13);
+  EXPECT_NEAR(frames[1].to->z(), 1, 1e-15);
+  EXPECT_FALSE(frames[1].target.has_value());
+}
+
+TEST(ViewPathCameras, EndsOnTheViewsExactlyAndInterpolatesBetweenThem) {
+  CameraSpec a = targetCamera(), b = targetCamera();
+  b.location = Point(0, 4, 10);
+  b.target = Point(2, 2, 2);
+  b.vpDistance = 7;
+  const std::vector<CameraSpec> frames = viewPathCameras({a, b}, 3);
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(frames[0].location, a.location);
+  EXPECT_EQ(frames[2].location, b.location);
+  EXPECT_EQ(*frames[2].target, *b.target);
+  // Halfway: every quantity the mean of the two views' (exact for these numbers).
+  EXPECT_EQ(frames[1].location, Point(5, 2, 5));
+  EXPECT_EQ(*frames[1].target, Point(1, 1, 1));
+  EXPECT_EQ(frames[1].vpDistance, 6);
+  EXPECT_EQ(frames[1].vpWidth, 4);
+}
+
+TEST(ViewPathCameras, AFrameOnAMiddleViewIsThatView) {
+  CameraSpec a = targetCamera(), b = targetCamera(), c = targetCamera();
+  b.location = Point(0.3, 0.1, 7.7);
+  c.location = Point(-9, 1, 0);
+  const std::vector<CameraSpec> frames = viewPathCameras({a, b, c}, 5);  // 0, .5, 1, 1.5, 2
+  EXPECT_EQ(frames[2].location, b.location);
+  EXPECT_EQ(frames[4].location, c.location);
+}
+
+TEST(ViewPathCameras, BetweenADirectionAndATargetTheUpVectorStaysOrthogonal) {
+  CameraSpec a = targetCamera(), b = targetCamera();
+  b.target.reset();
+  b.location = Point(0, 10, 0);
+  b.to = Vector(0, -1, 0);
+  b.up = Vector(0, 0, -1);
+  const std::vector<CameraSpec> frames = viewPathCameras({a, b}, 4);
+  for (int k = 1; k < 3; ++k) {
+    ASSERT_TRUE(frames[k].to.has_value());
+    EXPECT_NEAR(frames[k].to->dot(frames[k].up), 0, 1e-15) << k;
+    EXPECT_NEAR(frames[k].to->length(), 1, 1e-15) << k;
+  }
+}
+
+TEST(AnimationPlan, FrameNamesHaveAtLeastFourDigits) {
+  AnimationPlan plan{{}, std::vector<CameraSpec>(12), {}, "out", {}, "", 30};
+  EXPECT_EQ(plan.framePath(7), "out/frame-0007.png");
+  plan.cameras.resize(12345);
+  EXPECT_EQ(plan.framePath(7), "out/frame-00007.png");
+}
+
+// ---- rt animate, as a user runs it ----
+
+TEST(RtAnimate, FramesAreSingleRendersAndFrameKAloneIsTheSameBytes) {
+  const std::string dir = freshDirectory("animate-orbit");
+  const test::RtResult all = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "3",
+                                    "--width", "48", "-o", dir + "/all", "-q"});
+  ASSERT_EQ(all.exitCode, 0) << all.err;
+  EXPECT_NE(all.err.find("(3 frames): 48x27"), std::string::npos) << all.err;
+  const test::RtResult one = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "3",
+                                    "--frame", "2", "--width", "48", "-o", dir + "/one", "-s"});
+  ASSERT_EQ(one.exitCode, 0) << one.err;
+  const test::RtResult render =
+      runRt({"render", "galaxy", "--width", "48", "-o", dir + "/render.png", "-s"});
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+
+  const std::string f0 = readFile(dir + "/all/frame-0000.png");
+  const std::string f1 = readFile(dir + "/all/frame-0001.png");
+  const std::string f2 = readFile(dir + "/all/frame-0002.png");
+  ASSERT_FALSE(f2.empty());
+  EXPECT_EQ(f0, readFile(dir + "/render.png"));  // frame 0 is the scene's camera
+  EXPECT_EQ(f2, readFile(dir + "/one/frame-0002.png"));
+  EXPECT_NE(f0, f1);
+  EXPECT_NE(f1, f2);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/one/frame-0000.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/all/frame-0003.png"));
+}
+
+TEST(RtAnimate, APathThroughViewsStartsAndEndsOnThem) {
+  const std::string dir = freshDirectory("animate-views");
+  const test::RtResult r = runRt({"animate", "galaxy", "--through", "main,above", "--frames",
+                                  "3", "--width", "40", "-o", dir + "/f", "-s"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_EQ(runRt({"render", "galaxy", "--view", "above", "--width", "40", "-o",
+                   dir + "/above.png", "-s"})
+                .exitCode,
+            0);
+  EXPECT_EQ(readFile(dir + "/f/frame-0002.png"), readFile(dir + "/above.png"));
+}
+
+TEST(RtAnimate, RefusesAPathItCannotMakeBeforeAnyFrame) {
+  const std::string dir = freshDirectory("animate-refusals");
+  const test::RtResult unknown = runRt({"animate", "galaxy", "--through", "main,abuve",
+                                        "--frames", "3", "-o", dir + "/f"});
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.err.find("rt: --through: the scene has no view 'abuve'; did you mean 'above'?"),
+            std::string::npos)
+      << unknown.err;
+  const test::RtResult both = runRt({"animate", "galaxy", "--orbit", "30", "--through", "all",
+                                     "--frames", "3", "-o", dir + "/f"});
+  EXPECT_EQ(both.exitCode, 2);
+  EXPECT_EQ(both.err, "rt: --orbit and --through: give one camera path, not both\n");
+  const test::RtResult none = runRt({"animate", "galaxy", "--frames", "3", "-o", dir + "/f"});
+  EXPECT_EQ(none.err, "rt: give a camera path: --orbit DEGREES or --through VIEW,VIEW,...\n");
+  const test::RtResult frame = runRt(
+      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--frame", "3", "-o", dir + "/f"});
+  EXPECT_EQ(frame.err, "rt: --frame: expected a frame from 0 to 2 (--frames 3), got 3\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f"));
+}
+
+TEST(RtAnimate, WithoutFfmpegAVideoIsRefusedWithExitTwoBeforeAnyFrame) {
+  const std::string dir = freshDirectory("animate-no-ffmpeg");
+  test::RtOptions options;
+  options.path = std::filesystem::absolute(dir).string();  // a PATH without ffmpeg
+  const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2",
+                                  "--width", "32", "-o", dir + "/f", "--video", dir + "/v.mp4"},
+                                 options);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_EQ(r.err,
+            "rt: --video: encoding a video needs ffmpeg, which is not on PATH; install it "
+            "(apt-get install ffmpeg, or scripts/deps.sh --video), or leave out --video to write "
+            "the frames only\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/f"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/v.mp4"));
+}
+
+TEST(RtAnimate, TheVideoHoldsEveryFrameAtTheFramesSize) {
+  const std::optional<std::string> ffprobe = findOnPath("ffprobe");
+  if (!findOnPath("ffmpeg") || !ffprobe)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";
+  const std::string dir = freshDirectory("animate-video");
+  const test::RtResult r =
+      runRt({"animate", "galaxy", "--orbit", "360", "--frames", "5", "--width", "64", "-o",
+             dir + "/f", "--video", dir + "/orbit.mp4", "--fps", "10", "-q"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("rt: wrote " + dir + "/orbit.mp4: 5 frames at 10 frames/s (H.264)\n"),
+            std::string::npos)
+      << r.err;
+  const test::RtResult probe =
+      runProgram({*ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
+                  "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0",
+                  dir + "/orbit.mp4"});
+  ASSERT_EQ(probe.exitCode, 0) << probe.err;
+  EXPECT_EQ(probe.out, "64,36,5\n");
+  // Nothing but the video is left beside it (the temporary file was renamed).
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 1);
+}
+
+}  // namespace
+}  // namespace rt::cli
