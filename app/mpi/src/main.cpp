@@ -1,0 +1,53 @@
+// The `rt-mpi` executable: MPI's start and end around rt::mpi::runRtMpi, and the signals.
+#include <mpi.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <streambuf>
+#include <string>
+#include <vector>
+
+#include "Distributed.h"
+#include "RtMpi.h"
+
+namespace {
+
+// SIGINT (Ctrl-C) and SIGTERM (what mpirun sends every rank when it is interrupted) raise the
+// stop flag: the render threads stop within a row, rank 0 writes nothing. A second signal ends
+// the process at once.
+extern "C" void onStop(int sig) {
+  rt::mpi::stopFlag().store(true);
+  std::signal(sig, SIG_DFL);
+}
+
+/// Where the ranks other than 0 print: nowhere (rank 0 speaks for the job).
+class NullBuffer final : public std::streambuf {
+ protected:
+  int overflow(int c) override { return c; }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int provided = MPI_THREAD_SINGLE;
+  if (MPI_Init_thread(&argc, &argv, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
+    std::cerr << "rt-mpi: MPI could not be started (is this run by mpirun or srun?)\n";
+    return 1;
+  }
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::signal(SIGINT, onStop);
+  std::signal(SIGTERM, onStop);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  NullBuffer nothing;
+  std::ostream silent(&nothing);
+  const rt::cli::Io io = rank == 0 ? rt::cli::Io{std::cout, std::cerr,
+                                                 ::isatty(STDERR_FILENO) == 1, &rt::mpi::stopFlag()}
+                                   : rt::cli::Io{silent, silent, false, &rt::mpi::stopFlag()};
+  const int code = rt::mpi::runRtMpi(args, io, MPI_COMM_WORLD, provided >= MPI_THREAD_MULTIPLE);
+  std::cout.flush();
+  MPI_Finalize();
+  return code;
+}

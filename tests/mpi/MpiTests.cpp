@@ -1,0 +1,277 @@
+// rt-mpi under mpirun, as a user runs it: the same bytes as rt render and rt animate for 1, 2 and
+// 3 ranks and 1 or 2 threads per rank, a scene file and its model file sent to a rank that
+// cannot read them, and the faults (a bad scene, a rank out of memory, a rank killed, Ctrl-C).
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "RtProcess.h"
+
+#ifndef RT_MPI_EXE
+#error "RT_MPI_EXE must name the rt-mpi executable"
+#endif
+
+namespace rt::cli::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// mpirun -np N rt-mpi ARGS...: as many ranks as asked on this machine whatever its cores, as
+/// root if need be (CI), without the shared-memory single copy that containers forbid.
+std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args) {
+  std::vector<std::string> all{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root", "--mca",
+                               "btl_vader_single_copy_mechanism", "none", "-np",
+                               std::to_string(ranks), RT_MPI_EXE};
+  all.insert(all.end(), args.begin(), args.end());
+  return all;
+}
+
+RtResult runMpi(int ranks, const std::vector<std::string>& args) {
+  return runProgram(mpirun(ranks, args));
+}
+
+/// The lines of err that rt-mpi printed (its own, not mpirun's).
+std::vector<std::string> rtMpiLines(const std::string& err) {
+  std::vector<std::string> lines;
+  std::istringstream in(err);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("rt-mpi: ", 0) == 0) lines.push_back(line);
+  return lines;
+}
+
+/// The process ids of rt-mpi ranks whose command line holds marker, with their rank.
+std::vector<std::pair<pid_t, int>> ranksRunning(const std::string& marker) {
+  std::vector<std::pair<pid_t, int>> found;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    const std::string cmdline = readFile(entry.path().string() + "/cmdline");
+    if (cmdline.find("rt-mpi") == std::string::npos || cmdline.find(marker) == std::string::npos)
+      continue;
+    const std::string environ = readFile(entry.path().string() + "/environ");
+    const std::string key = std::string("OMPI_COMM_WORLD_RANK=");
+    const std::size_t at = environ.find(key);
+    if (at == std::string::npos) continue;
+    found.emplace_back(static_cast<pid_t>(std::stol(name)),
+                       std::stoi(environ.substr(at + key.size())));
+  }
+  return found;
+}
+
+class RtMpi : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    dir_ = fs::absolute(freshDirectory("mpi-" + name)).string();
+  }
+  std::string path(const std::string& file) const { return dir_ + "/" + file; }
+  std::string dir_;
+};
+
+TEST_F(RtMpi, TheGalaxyIsTheBytesOfRtRenderForOneTwoAndThreeRanksAndAnyThreads) {
+  const RtResult single =
+      runRt({"render", "galaxy", "--width", "96", "-o", path("rt.png"), "-s", "--threads", "1"});
+  ASSERT_EQ(single.exitCode, 0) << single.err;
+  const std::string expected = readFile(path("rt.png"));
+  for (const int ranks : {1, 2, 3})
+    for (const int threads : {1, 2}) {
+      const std::string out = path("mpi-" + std::to_string(ranks) + "x" +
+                                   std::to_string(threads) + ".png");
+      const RtResult r = runMpi(ranks, {"render", "galaxy", "--width", "96", "-o", out, "-q",
+                                        "--threads", std::to_string(threads)});
+      ASSERT_EQ(r.exitCode, 0) << ranks << "x" << threads << ": " << r.err;
+      EXPECT_EQ(readFile(out), expected) << ranks << " ranks x " << threads << " threads";
+      const std::string where = "on " + std::to_string(ranks) +
+                                (ranks == 1 ? " rank x " : " ranks x ") +
+                                std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+      EXPECT_NE(r.err.find("rt-mpi: wrote " + out + ": 96x54, tracer beams, 5184 primary rays"),
+                std::string::npos)
+          << r.err;
+      EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+    }
+}
+
+TEST_F(RtMpi, ASampledSceneFileIsTheBytesOfRtRender) {
+  const std::string scene = std::string(RT_SCENES_DIR) + "/soft-shadows.json";
+  ASSERT_EQ(runRt({"render", scene, "--width", "64", "-o", path("rt.png"), "-s"}).exitCode, 0);
+  for (const int ranks : {1, 2, 3}) {
+    const std::string out = path("mpi-" + std::to_string(ranks) + ".png");
+    const RtResult r = runMpi(ranks, {"render", scene, "--width", "64", "-o", out, "-s"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readFile(out), readFile(path("rt.png"))) << ranks << " ranks";
+  }
+}
+
+TEST_F(RtMpi, RankZeroSendsTheSceneAndItsModelFileToRanksThatCannotReadThem) {
+  // Rank 1 starts in an empty folder: the relative scene path, and the model file the scene
+  // names, exist only for rank 0. Both ranks render (one thread each), so rank 1's tiles come
+  // from the bytes rank 0 sent.
+  const std::string scenesParent = fs::path(RT_SCENES_DIR).parent_path().string();
+  const std::string empty = path("empty");
+  fs::create_directories(empty);
+  const std::string scene = "scenes/model-shading.json";
+  RtOptions inRepository;
+  inRepository.cwd = scenesParent;
+  ASSERT_EQ(runRt({"render", scene, "--width", "640", "-o", path("rt.png"), "-s"}, inRepository)
+                .exitCode,
+            0);
+  std::vector<std::string> command{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root",
+                                   "--mca", "btl_vader_single_copy_mechanism", "none"};
+  const std::vector<std::string> args{"render", scene, "--width", "640", "-o", path("mpi.png"),
+                                      "--threads", "1"};
+  for (const std::string& wdir : {scenesParent, empty}) {
+    if (wdir == empty) command.push_back(":");
+    command.insert(command.end(), {"-np", "1", "-wdir", wdir, RT_MPI_EXE});
+    command.insert(command.end(), args.begin(), args.end());
+  }
+  const RtResult r = runProgram(command);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(readFile(path("mpi.png")), readFile(path("rt.png")));
+  // 640x320 in tiles of 32: 20 x 10 tiles (0.15 s of work on one thread), enough that rank 1
+  // renders some of them, from the bytes it got, before rank 0 alone has done them all.
+  const std::size_t at = r.err.find("rt-mpi: dealt 200 tiles on demand (rank 0: ");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const std::size_t one = r.err.find(", rank 1: ", at);
+  ASSERT_NE(one, std::string::npos) << r.err;
+  const int rank0 = std::stoi(r.err.substr(at + 43));
+  const int rank1 = std::stoi(r.err.substr(one + 10));
+  EXPECT_EQ(rank0 + rank1, 200) << r.err;
+  EXPECT_GE(rank1, 1) << r.err;
+}
+
+TEST_F(RtMpi, AnimateFramesAreTheBytesOfRtAnimateDealtAsFramesOrAsTiles) {
+  ASSERT_EQ(runRt({"animate", "galaxy", "--orbit", "60", "--frames", "3", "--width", "48", "-o",
+                   path("rt"), "-s"})
+                .exitCode,
+            0);
+  // 3 frames on 2 ranks: whole frames; 3 frames on 3 ranks: still frames; 1 frame (--frame) on
+  // 3 ranks: tiles.
+  for (const int ranks : {2, 3}) {
+    const std::string out = path("mpi-" + std::to_string(ranks));
+    const RtResult r = runMpi(ranks, {"animate", "galaxy", "--orbit", "60", "--frames", "3",
+                                      "--width", "48", "-o", out, "--threads", "1"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("dealing frames"), std::string::npos) << r.err;
+    for (const char* frame : {"frame-0000.png", "frame-0001.png", "frame-0002.png"})
+      EXPECT_EQ(readFile(out + "/" + frame), readFile(path("rt/") + frame)) << ranks << frame;
+  }
+  const RtResult tiles = runMpi(3, {"animate", "galaxy", "--orbit", "60", "--frames", "3",
+                                    "--frame", "1", "--width", "48", "-o", path("tiles")});
+  ASSERT_EQ(tiles.exitCode, 0) << tiles.err;
+  EXPECT_NE(tiles.err.find("dealing tiles of 32x32"), std::string::npos) << tiles.err;
+  EXPECT_EQ(readFile(path("tiles/frame-0001.png")), readFile(path("rt/frame-0001.png")));
+}
+
+TEST_F(RtMpi, ABadSceneFailsEveryRankWithOneMessageAndWritesNothing) {
+  {
+    std::ofstream(path("bad.json"))
+        << "{\n  \"camera\": {\"location\": [0, 0, 10], \"target\": [0, 0, 0], "
+           "\"vpDistance\": 10, \"vpSize\": [4, 4], \"resolution\": [8, 8]},\n"
+           "  \"geometries\": [\n    {\"type\": \"sphere\", \"center\": [0, 0, 0], "
+           "\"radius\": -2}\n  ]\n}\n";
+  }
+  std::ofstream(path("bad.png")) << "the image of an earlier run";
+  // The message is rt render's, with rt-mpi's name: the scene's line and column, the key, the
+  // value.
+  const RtResult single = runRt({"render", path("bad.json"), "-o", path("bad.png")});
+  ASSERT_EQ(single.exitCode, 2) << single.err;
+  ASSERT_EQ(single.err.rfind("rt: ", 0), 0u) << single.err;
+  const std::string message = single.err.substr(4, single.err.find('\n') - 4);
+  EXPECT_EQ(message, path("bad.json") + ":4:55: geometries[0].radius: expected a positive "
+                                        "number, got -2");
+  const RtResult r = runMpi(3, {"render", path("bad.json"), "-o", path("bad.png")});
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  const std::vector<std::string> lines = rtMpiLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_EQ(lines[0], "rt-mpi: " + message);
+  EXPECT_EQ(readFile(path("bad.png")), "the image of an earlier run");
+}
+
+TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
+  // Rank 1 may map at most 400 MB: too little for a galaxy of a million stars, which rank 0
+  // builds (and checks) fine.
+  std::vector<std::string> command{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root",
+                                   "--mca", "btl_vader_single_copy_mechanism", "none", "-np", "1",
+                                   RT_MPI_EXE};
+  const std::vector<std::string> args{"render", "galaxy", "--param", "stars=1000000", "--width",
+                                      "32", "-o", path("oom.png"), "-q"};
+  command.insert(command.end(), args.begin(), args.end());
+  command.insert(command.end(), {":", "-np", "1", "sh", "-c",
+                                 std::string("ulimit -v 400000 && exec \"$0\" \"$@\""),
+                                 RT_MPI_EXE});
+  command.insert(command.end(), args.begin(), args.end());
+  const RtResult r = runProgram(command);
+  EXPECT_NE(r.exitCode, 0);
+  const std::vector<std::string> lines = rtMpiLines(r.err);
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  EXPECT_EQ(lines[0], "rt-mpi: rank 1 on " + std::string(host) +
+                          ": cannot build the scene: out of memory");
+  EXPECT_FALSE(fs::exists(path("oom.png")));
+}
+
+TEST_F(RtMpi, ARankKilledMidRenderFailsTheJobAndNothingIsWritten) {
+  {
+    std::ofstream(path("kept.png")) << "an earlier image";
+  }
+  const std::string out = path("kept.png");
+  RtChild job(Program{mpirun(2, {"render", "galaxy", "--width", "480", "-o", out, "--threads",
+                                 "1"})});
+  ASSERT_TRUE(job.waitForLine("rt-mpi: rendering 10%")) << job.err();
+  std::vector<std::pair<pid_t, int>> ranks = ranksRunning(out);
+  pid_t victim = -1;
+  for (const auto& [pid, rank] : ranks)
+    if (rank == 1) victim = pid;
+  ASSERT_GT(victim, 0) << "rank 1 not found among " << ranks.size() << " processes";
+  ::kill(victim, SIGKILL);
+  const int code = job.wait();
+  EXPECT_NE(code, 0) << job.err();
+  EXPECT_NE(job.err().find("rank 1"), std::string::npos) << job.err();  // mpirun names it
+  EXPECT_EQ(readFile(out), "an earlier image");
+  EXPECT_TRUE(ranksRunning(out).empty());
+}
+
+TEST_F(RtMpi, CtrlCOnMpirunStopsEveryRankAndLeavesTheImageAsItWas) {
+  {
+    std::ofstream(path("kept.png")) << "an earlier image";
+  }
+  const std::string out = path("kept.png");
+  RtChild job(Program{mpirun(2, {"render", "galaxy", "--width", "480", "-o", out, "--threads",
+                                 "1"})});
+  ASSERT_TRUE(job.waitForLine("rt-mpi: rendering 10%")) << job.err();
+  job.signal(SIGINT);
+  const int code = job.wait();
+  EXPECT_NE(code, 0) << job.err();
+  EXPECT_NE(job.err().find("rt-mpi: interrupted after "), std::string::npos) << job.err();
+  EXPECT_NE(job.err().find("pixels; nothing written to " + out), std::string::npos) << job.err();
+  EXPECT_EQ(readFile(out), "an earlier image");
+  // Every rank has ended (mpirun waits for them).
+  EXPECT_TRUE(ranksRunning(out).empty());
+}
+
+TEST_F(RtMpi, AnimateEncodesTheVideoOnRankZero) {
+  if (runProgram({"/bin/sh", "-c", "command -v ffmpeg && command -v ffprobe"}).exitCode != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";
+  const RtResult r = runMpi(2, {"animate", "galaxy", "--orbit", "360", "--frames", "4",
+                                "--width", "48", "-o", path("f"), "--video", path("v.mp4"),
+                                "--threads", "1", "-q"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const RtResult probe = runProgram(
+      {"/bin/sh", "-c",
+       "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+       "stream=nb_read_frames,width,height -of csv=p=0 \"$0\"",
+       path("v.mp4")});
+  EXPECT_EQ(probe.out, "48,28,4\n") << probe.err;  // 48x27 padded to an even height
+}
+
+}  // namespace
+}  // namespace rt::cli::test
