@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project builds with, when they are missing.
 #
-#   scripts/deps.sh [--dry-run] [--embree] [--pretend-missing PKG]... [EXTRA_PKG]...
+#   scripts/deps.sh [--dry-run] [--embree] [--mpi] [--video] [--pretend-missing PKG]...
+#                   [EXTRA_PKG]...
 #
 # Silent, and touches nothing, when every package is already installed (a dry run then says
 # "nothing missing" and lists the packages it checked). Otherwise it runs
@@ -10,7 +11,9 @@
 # fuzzer). --dry-run prints what would be installed and exits 0 without changing anything;
 # --pretend-missing treats PKG as not installed (to try the install path on a complete machine).
 # --embree adds Intel's Embree 3 (libembree-dev), optional: with it, `rt bench` gains its row
-# "Embree 3" (reconfigure after installing).
+# "Embree 3" (reconfigure after installing). --mpi adds OpenMPI (openmpi-bin, libopenmpi-dev):
+# with it, rt-mpi is built and its tests (label mpi) run. --video adds ffmpeg, which
+# `rt animate --video` encodes with. The README's test command and CI ask for both.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # rt_usage
@@ -28,6 +31,8 @@ while (($#)); do
   case "$1" in
     --dry-run) dry_run=1 ;;
     --embree) packages+=(libembree-dev) ;;
+    --mpi) packages+=(openmpi-bin libopenmpi-dev) ;;
+    --video) packages+=(ffmpeg) ;;
     --pretend-missing)
       (($# >= 2)) || { echo "deps.sh: --pretend-missing needs a package name" >&2; exit 2; }
       pretend+=("$2")

@@ -4,7 +4,8 @@
 #   scripts/test-all.sh [CTEST_OPTION]...
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
-# (scripts/deps.sh, and python3 with matplotlib for the workflow tests), configures the release
+# (scripts/deps.sh, python3 with matplotlib for the workflow tests, OpenMPI for rt-mpi and its
+# tests, ffmpeg for rt animate --video), configures the release
 # preset, builds all targets and runs ctest with output on failure. Options go to ctest (for example -L stage03,
 # or -R Sphere); a selection that matches no test is an error (--no-tests=error), not a pass. The
 # last line printed is ctest's summary ("100% tests passed, 0 tests failed out of N"); the exit
@@ -20,7 +21,7 @@ esac
 
 cd "$RT_ROOT"
 # python3: scripts/grade and the workflow tests; python3-matplotlib: the gallery's charts
-"$RT_ROOT/scripts/deps.sh" python3 python3-matplotlib
+"$RT_ROOT/scripts/deps.sh" --mpi --video python3 python3-matplotlib
 
 build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/release}"
 rt_banner "Configuring (release preset) in $build_dir"
