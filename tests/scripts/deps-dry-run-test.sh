@@ -74,5 +74,11 @@ STUB_MISSING="libembree-dev" check "TC09 dry run, Embree missing" 0 \
 # TC10: without --embree, a missing Embree is not asked for
 STUB_MISSING="libembree-dev" check "TC10 Embree missing, not asked for" 0 \
   "deps.sh: dry run: nothing missing ($all)" --dry-run
+# TC11: --mpi adds OpenMPI (the program and the headers), --video ffmpeg
+STUB_MISSING="" check "TC11 dry run, --mpi and --video" 0 \
+  "deps.sh: dry run: nothing missing ($all openmpi-bin libopenmpi-dev ffmpeg)" --dry-run --mpi --video
+# TC12: the test command's packages (scripts/test-all.sh) with OpenMPI's headers missing
+STUB_MISSING="libopenmpi-dev" check "TC12 dry run, OpenMPI missing" 0 \
+  "deps.sh: dry run: missing: libopenmpi-dev" --dry-run --mpi --video python3 python3-matplotlib
 
 ((failures == 0))
