@@ -27,6 +27,7 @@
 
 #include <CLI/App.hpp>
 
+#include "DealModel.h"
 #include "Distributed.h"
 #include "Wire.h"
 #include "camera/Image.h"
@@ -277,6 +278,9 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
   int threads = doc.render.threads > 0 ? doc.render.threads : allowed;
   const bool oneThreadOnly = world.rank != 0 && !wholeFrames && !world.threadsMayCallMpi;
   if (oneThreadOnly) threads = 1;
+  // Every rank must cut the frames alike: the tile side from the job's threads in all.
+  long long mine = threads, allRenderThreads = 0;
+  MPI_Allreduce(&mine, &allRenderThreads, 1, MPI_LONG_LONG, MPI_SUM, world.comm);
   JobSpec spec{doc,
                *traced.tracer,
                *sampler,
@@ -284,7 +288,7 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
                resolved->outputs,
                job.gridLines,
                wholeFrames,
-               RenderOptions::DEFAULT_TILE_SIZE,
+               model::dealtTileSide(first.nX, first.nY, resolved->cameras.size(), allRenderThreads),
                threads};
   const std::size_t ranks = static_cast<std::size_t>(world.size);
   std::vector<int> allThreads(ranks), allAllowed(ranks), allMachine(ranks);
