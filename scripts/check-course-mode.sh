@@ -7,8 +7,9 @@
 # mini2_bvh), in order, or only the ones named: configure one reused build tree (build/course,
 # or RT_BUILD_DIR) with -DRT_LAST_STAGE=<folder>, build everything, then for every stage built so
 # far check that `ctest -L <label>` selects at least one test and passes, and that no test of a
-# later stage exists in that configuration. The label of a folder is its name up to the first
-# underscore (stage04_camera -> stage04, mini1_glossy -> mini1). Reusing one build tree keeps the
+# later stage exists in that configuration (and, before mini2_bvh, no rt-mpi target). The label
+# of a folder is its name up to the first underscore (stage04_camera -> stage04, mini1_glossy ->
+# mini1). Reusing one build tree keeps the
 # object files of the lower stages from step to step, so each step builds only the new stage.
 # Stops at the first failure, naming the stage.
 set -euo pipefail
@@ -69,6 +70,11 @@ for stage in "${wanted[@]}"; do
     fail "$stage" "build failed" "$log"
   fi
 
+  # rt-mpi deals mini2's tiles: a cut before mini2_bvh has no such program (nor its model).
+  if [[ "$stage" != mini2_bvh ]] &&
+      cmake --build "$build_dir" --target help | grep -Eq '^\.\.\. (rt-mpi|mpi_deal_model)$'; then
+    fail "$stage" "the cut has rt-mpi or mpi_deal_model, which need mini2_bvh's tile pool"
+  fi
   # Labels of this configuration: those of the stages up to $stage, plus any label that is not a
   # stage's (cross-stage tests, for example). A stage label beyond $stage is a leak.
   allowed=()
