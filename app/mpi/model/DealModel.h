@@ -41,7 +41,8 @@ struct Network {
 
 struct Dealer {
   double perMessage = 10e-6;    ///< rank 0's main thread per message (receive, copy, answer)
-  double idlePoll = 100e-6;     ///< its sleep when nothing came: an idle dealer answers half later
+  double idlePoll = 1e-3;       ///< its longest sleep when nothing came: an idle dealer answers
+                                ///< half of it later (rt-mpi sleeps 50 µs, doubled up to 1 ms)
   double perFrameWrite = 0;     ///< finishing and writing one frame (PNG)
 };
 
@@ -63,7 +64,7 @@ Outcome replay(const std::vector<Unit>& units, const Cluster& cluster, const Net
 /// The side of the tiles rt-mpi deals for frames of nX x nY pixels to `threads` render threads
 /// in all: 32 (the tile pool's), halved down to 8 while the job would have fewer than 8 tiles a
 /// thread. The model's reason (docs/distributed.md): on the galaxy the costliest tile of 32 costs
-/// 7 % of a machine's frame time, which caps a frame at about 12 machines' speed-up however
+/// 7 % of a machine's frame time, which caps a frame at about 11 machines' speed-up however
 /// many there are; tiles of 16 and 8 cost a quarter and a sixteenth of that, for four and
 /// sixteen times the messages. Any side gives the same image.
 int dealtTileSide(int nX, int nY, std::uint64_t frames, long long threads);

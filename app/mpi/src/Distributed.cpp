@@ -311,6 +311,7 @@ JobOutcome runDealer(const JobSpec& spec, const std::vector<std::string>& hosts,
   for (std::size_t r = 1; r < threads.size(); ++r) remote += spec.wholeFrames ? 1 : threads[r];
   std::vector<char> buffer(sizeof(WorkHeader) + units.maxPixels() * 3 * sizeof(double));
   int answered = 0;
+  std::chrono::microseconds idle{50};
   while (answered < remote || localDone.load() < localThreads) {
     if (stopFlag().load() && !abort.load()) {
       const std::lock_guard<std::mutex> lock(mutex);
@@ -321,9 +322,15 @@ JobOutcome runDealer(const JobSpec& spec, const std::vector<std::string>& hosts,
     MPI_Status status;
     if (answered < remote) MPI_Iprobe(MPI_ANY_SOURCE, TAG_WORK, comm, &flag, &status);
     if (!flag) {
-      std::this_thread::sleep_for(std::chrono::microseconds(100));
+      // Nothing came: sleep, longer the longer nothing comes (50 µs doubled up to 1 ms), so that
+      // a busy job is answered at once and a quiet one does not wake this thread 10,000 times a
+      // second beside the render threads; when only rank 0's own threads are left, 5 ms (it
+      // only passes a Ctrl-C on to them).
+      std::this_thread::sleep_for(answered < remote ? idle : std::chrono::microseconds(5000));
+      idle = std::min(idle * 2, std::chrono::microseconds(1000));
       continue;
     }
+    idle = std::chrono::microseconds(50);
     int count = 0;
     MPI_Get_count(&status, MPI_BYTE, &count);
     const int source = status.MPI_SOURCE;

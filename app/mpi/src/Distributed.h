@@ -7,7 +7,7 @@
 //                ranks): a rank renders a frame with all its threads
 //     rank 0     deals: one atomic counter, read by its own render threads and, for the other
 //                ranks, by its main thread, which answers each request (MPI_Iprobe, then a
-//                short sleep when nothing came) with the next unit, or "no more"
+//                sleep of 50 µs to 1 ms when nothing came) with the next unit, or "no more"
 //                assembles: each result's pixels go into the frame's image; a frame complete is
 //                finished (grid lines) and written atomically, then freed
 //     rank r > 0 each render thread (tiles) or the main thread (frames): send the last result
@@ -44,7 +44,7 @@ struct JobSpec {
   std::vector<std::string> outputs;  ///< rank 0: frame i's path (same length as cameras)
   std::optional<int> gridLines;      ///< --grid-lines, over the scene's render.gridLines
   bool wholeFrames = false;          ///< deal frames, not tiles
-  int tileSize = 32;                 ///< the tiles' side (tiles mode)
+  int tileSize = 32;                 ///< the tiles' side (tiles mode; RtMpi: dealtTileSide)
   int threads = 1;                   ///< this rank's render threads (>= 1)
 };
 
