@@ -22,6 +22,14 @@ extern "C" void onStop(int sig) {
   std::signal(sig, SIG_DFL);
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+// Under AddressSanitizer (the asan preset): LeakSanitizer's suppressions of OpenMPI's own
+// allocations (cmake/lsan.supp) match a frame of libmpi or libopen-rte in the allocation's
+// stack, but OpenMPI's libraries have no frame pointers, so the fast unwinder stops in them
+// before reaching one: rt-mpi unwinds the slow way (ASAN_OPTIONS can still say otherwise).
+extern "C" const char* __asan_default_options() { return "fast_unwind_on_malloc=0"; }
+#endif
+
 /// Where the ranks other than 0 print: nowhere (rank 0 speaks for the job).
 class NullBuffer final : public std::streambuf {
  protected:
