@@ -73,6 +73,16 @@ class RtMpi : public ::testing::Test {
     dir_ = fs::absolute(freshDirectory("mpi-" + name)).string();
   }
   std::string path(const std::string& file) const { return dir_ + "/" + file; }
+  /// An existing image at path(name), which a failed job must leave as it was.
+  std::string earlierImage(const std::string& name) const {
+    const std::string out = path(name);
+    std::ofstream(out) << "an earlier image";
+    return out;
+  }
+  /// A render on 2 ranks of 1 thread, long enough to be stopped after its first 10 %.
+  static Program interruptibleRender(const std::string& out) {
+    return Program{mpirun(2, {"render", "galaxy", "--width", "480", "-o", out, "--threads", "1"})};
+  }
   std::string dir_;
 };
 
@@ -226,12 +236,8 @@ TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
 }
 
 TEST_F(RtMpi, ARankKilledMidRenderFailsTheJobAndNothingIsWritten) {
-  {
-    std::ofstream(path("kept.png")) << "an earlier image";
-  }
-  const std::string out = path("kept.png");
-  RtChild job(Program{mpirun(2, {"render", "galaxy", "--width", "480", "-o", out, "--threads",
-                                 "1"})});
+  const std::string out = earlierImage("kept.png");
+  RtChild job(interruptibleRender(out));
   ASSERT_TRUE(job.waitForLine("rt-mpi: rendering 10%")) << job.err();
   std::vector<std::pair<pid_t, int>> ranks = ranksRunning(out);
   pid_t victim = -1;
@@ -247,12 +253,8 @@ TEST_F(RtMpi, ARankKilledMidRenderFailsTheJobAndNothingIsWritten) {
 }
 
 TEST_F(RtMpi, CtrlCOnMpirunStopsEveryRankAndLeavesTheImageAsItWas) {
-  {
-    std::ofstream(path("kept.png")) << "an earlier image";
-  }
-  const std::string out = path("kept.png");
-  RtChild job(Program{mpirun(2, {"render", "galaxy", "--width", "480", "-o", out, "--threads",
-                                 "1"})});
+  const std::string out = earlierImage("kept.png");
+  RtChild job(interruptibleRender(out));
   ASSERT_TRUE(job.waitForLine("rt-mpi: rendering 10%")) << job.err();
   job.signal(SIGINT);
   const int code = job.wait();
