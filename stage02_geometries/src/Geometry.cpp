@@ -17,7 +17,7 @@ Vector hitNormal(const Geometry& g, const Point& p, const Vector& fallback) noex
     }
     // Flat shapes: one stored normal, never undefined.
     Vector operator()(const Plane& s) const noexcept { return s.normal(); }
-    Vector operator()(const Triangle& s) const noexcept { return s.plane().normal(); }
+    Vector operator()(const Triangle& s) const noexcept { return s.normal(); }
     Vector operator()(const Polygon& s) const noexcept { return s.plane().normal(); }
   };
   return std::visit(Normal{p, fallback}, g);

@@ -1,6 +1,7 @@
 // Stage 2: Triangle constructor and normal (catalogue TriangleTests).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -43,6 +44,22 @@ TEST(TriangleTests, normal) {
   EXPECT_NEAR(n.dot(Point(0, 1, 0) - Point(1, 0, 0)), 0.0, 1e-12);
   EXPECT_NEAR(n.dot(Point(0, 0, 1) - Point(0, 1, 0)), 0.0, 1e-12);
   EXPECT_EQ(n, t2.plane().normal());
+}
+
+TEST(TriangleTests, planeIsTheVerticesPlaneBitForBit) {
+  // The triangle keeps only its plane's unit normal and makes the plane from it: the same bits
+  // as the Plane of its three vertices, whose normalisation rounds (1,2,2)/3 and (1,1,1)/√3.
+  // TC01: a normal of length 3 before normalisation; TC02: one of length √3
+  for (const auto& [p1, p2, p3] : {std::array{Point(0, 0, 0), Point(2, -1, 0), Point(2, 0, -1)},
+                                   std::array{Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0)}}) {
+    const Triangle t(p1, p2, p3);
+    const Plane expected(p1, p2, p3);
+    EXPECT_EQ(t.plane().point(), p1);
+    EXPECT_EQ(t.plane().normal(), expected.normal());
+    EXPECT_EQ(t.normal(), expected.normal());
+  }
+  // TC03: the triangle is its three points and a normal, no more (the variant's size)
+  EXPECT_EQ(4 * sizeof(Point), sizeof(Triangle));
 }
 
 }  // namespace

@@ -132,7 +132,7 @@ Roots flatRoots(const Double3& q, const Double3& n, std::span<const Point> verti
 }  // namespace
 
 Roots intersectRoots(const Triangle& t, const Ray& ray) noexcept {
-  return flatRoots(t.plane().point().xyz(), t.plane().normal().xyz(), t.vertices(), ray);
+  return flatRoots(t.vertices()[0].xyz(), t.normal().xyz(), t.vertices(), ray);
 }
 
 Roots intersectRoots(const Polygon& p, const Ray& ray) noexcept {

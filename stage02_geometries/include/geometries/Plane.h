@@ -21,6 +21,16 @@ class Plane {
   const Vector& normal(const Point&) const { return normal_; }
 
  private:
+  /// A Triangle keeps only its plane's normal and makes the plane from it when asked.
+  friend class Triangle;
+  /// The plane through q of a normal already unit (a normal this class made), not normalised
+  /// again, so that it is the same bits.
+  static Plane ofUnitNormal(const Point& q, const Vector& unitNormal) noexcept {
+    return Plane(q, unitNormal, Unit{});
+  }
+  struct Unit {};
+  Plane(const Point& q, const Vector& unitNormal, Unit) noexcept : q_(q), normal_(unitNormal) {}
+
   Point q_;
   Vector normal_;
 };
