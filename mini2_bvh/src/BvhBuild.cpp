@@ -479,7 +479,7 @@ class Builder {
 
 }  // namespace
 
-Bvh::Bvh(Primitives primitives, BvhBuildOptions options) : primitives_(primitives) {
+Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primitives_(primitives) {
   const std::span<const Geometry> shapes = primitives.shapes();
   std::vector<BuildRecord> records;
   records.reserve(primitives.size());
@@ -513,6 +513,11 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options) : primitives_(primitive
   // The records are done with before the compact spheres are made: the two never coexist.
   std::vector<BuildRecord>().swap(records);
   nodes_.shrink_to_fit();
+}
+
+void Bvh::makeCompactSpheres() {
+  const std::span<const Geometry> shapes = primitives_.shapes();
+  spheres_.clear();
   spheres_.reserve(sphereShapes_.size());
   for (std::uint32_t i : sphereShapes_) {
     const Sphere& s = std::get<Sphere>(shapes[i]);

@@ -233,8 +233,9 @@ struct Pending {
 
 }  // namespace
 
-WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options) : binary_(primitives, options) {
-  if (binary_.nodes_.empty()) return;
+WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options)
+    : binary_(primitives, options, Bvh::SpheresLater{}) {
+  if (binary_.nodes_.empty()) return;  // no bounded primitive, so no sphere to copy either
   // A binary tree of n nodes has (n + 1) / 2 leaves; a leaf's index must fit below LEAF.
   const std::size_t leafCount = (binary_.nodes_.size() + 1) / 2;
   if (leafCount >= WideNode::LEAF)
@@ -246,6 +247,7 @@ WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options) : binary_(primi
   collapser.collapse(0, 0);
   depth_ = collapser.depth();
   std::vector<BvhNode>().swap(binary_.nodes_);
+  binary_.makeCompactSpheres();
 }
 
 std::span<const std::uint32_t> WideBvh::leafShapes(const WideNode& node, int slot) const noexcept {

@@ -207,8 +207,8 @@ TEST_F(RtMpi, ABadSceneFailsEveryRankWithOneMessageAndWritesNothing) {
 }
 
 TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
-  // Rank 1 may map at most 400 MB: too little for a galaxy of a million stars, which rank 0
-  // builds (and checks) fine.
+  // Rank 1 may map at most 400 MB: too little for a galaxy of four million stars (its shapes
+  // alone are 4 x 10^6 x 104 bytes), which rank 0 builds (and checks) fine.
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "under AddressSanitizer a process reserves terabytes of address space for its "
                   "shadow memory, which ulimit -v refuses before main; the release build runs "
@@ -217,7 +217,7 @@ TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
   std::vector<std::string> command{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root",
                                    "--mca", "btl_vader_single_copy_mechanism", "none", "-np", "1",
                                    RT_MPI_EXE};
-  const std::vector<std::string> args{"render", "galaxy", "--param", "stars=1000000", "--width",
+  const std::vector<std::string> args{"render", "galaxy", "--param", "stars=4000000", "--width",
                                       "32", "-o", path("oom.png"), "-q"};
   command.insert(command.end(), args.begin(), args.end());
   command.insert(command.end(), {":", "-np", "1", "sh", "-c",

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/Commands.h"
+#include "common/Heap.h"
 
 namespace {
 
@@ -25,6 +26,7 @@ extern "C" void onInterrupt(int) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rt::keepLargeBlocksOutOfTheHeap();
   const std::vector<std::string> args(argv + 1, argv + argc);
   // Only the commands that render (rt render, rt animate, and mini project 2's rt bench) are
   // worth stopping gracefully; the other commands end at once, as usual.

@@ -11,6 +11,7 @@
 
 #include "Distributed.h"
 #include "RtMpi.h"
+#include "common/Heap.h"
 
 namespace {
 
@@ -39,6 +40,7 @@ class NullBuffer final : public std::streambuf {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rt::keepLargeBlocksOutOfTheHeap();
   int provided = MPI_THREAD_SINGLE;
   if (MPI_Init_thread(&argc, &argv, MPI_THREAD_MULTIPLE, &provided) != MPI_SUCCESS) {
     std::cerr << "rt-mpi: MPI could not be started (is this run by mpirun or srun?)\n";
