@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -105,6 +106,53 @@ TEST(ViewPathCameras, BetweenADirectionAndATargetTheUpVectorStaysOrthogonal) {
     EXPECT_NEAR(frames[k].to->dot(frames[k].up), 0, 1e-15) << k;
     EXPECT_NEAR(frames[k].to->length(), 1, 1e-15) << k;
   }
+}
+
+/// A camera at the origin looking along `to`, up +Y.
+CameraSpec directionCamera(const Vector& to) {
+  CameraSpec c = targetCamera();
+  c.target.reset();
+  c.location = Point(0, 0, 0);
+  c.to = to;
+  return c;
+}
+
+TEST(ViewPathCameras, DirectionsAtRightAnglesToTheUpVectorTurnEvenly) {
+  // TC01: from +X to -Z, up +Y (orthogonal to both): halfway looks along (1, 0, -1)/√2, a third
+  // of the way 30 degrees round; the up vector stays +Y exactly
+  const std::vector<CameraSpec> frames =
+      viewPathCameras({directionCamera(Vector(1, 0, 0)), directionCamera(Vector(0, 0, -1))}, 4);
+  const double third = std::numbers::pi / 6;
+  const double expected[2][3] = {{std::cos(third), 0, -std::sin(third)},
+                                 {std::sin(third), 0, -std::cos(third)}};
+  for (int k = 1; k < 3; ++k) {
+    ASSERT_TRUE(frames[k].to.has_value()) << k;
+    EXPECT_NEAR(frames[k].to->x(), expected[k - 1][0], 1e-15) << k;
+    EXPECT_EQ(frames[k].to->y(), 0) << k;
+    EXPECT_NEAR(frames[k].to->z(), expected[k - 1][2], 1e-15) << k;
+    EXPECT_EQ(frames[k].up, Vector(0, 1, 0)) << k;
+  }
+}
+
+TEST(ViewPathCameras, OppositeDirectionsTurnAboutTheUpVector) {
+  // TC01: from -Z to +Z, up +Y: no great circle is given, so the camera pans about +Y (towards
+  // up x direction = -X) rather than passing through a zero direction
+  const std::vector<CameraSpec> frames =
+      viewPathCameras({directionCamera(Vector(0, 0, -1)), directionCamera(Vector(0, 0, 1))}, 3);
+  ASSERT_TRUE(frames[1].to.has_value());
+  EXPECT_NEAR(frames[1].to->x(), -1, 1e-15);
+  EXPECT_EQ(frames[1].to->y(), 0);
+  EXPECT_NEAR(frames[1].to->z(), 0, 1e-15);
+  EXPECT_EQ(frames[1].up, Vector(0, 1, 0));
+  // TC02: opposite up vectors roll through the camera's side, keeping the direction
+  CameraSpec upsideDown = directionCamera(Vector(0, 0, -1));
+  upsideDown.up = Vector(0, -1, 0);
+  const std::vector<CameraSpec> rolled =
+      viewPathCameras({directionCamera(Vector(0, 0, -1)), upsideDown}, 3);
+  EXPECT_EQ(*rolled[1].to, Vector(0, 0, -1));
+  EXPECT_NEAR(std::fabs(rolled[1].up.x()), 1, 1e-15);
+  EXPECT_NEAR(rolled[1].up.y(), 0, 1e-15);
+  EXPECT_EQ(rolled[1].up.z(), 0);
 }
 
 TEST(AnimationPlan, FrameNamesHaveAtLeastFourDigits) {

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -37,8 +38,33 @@ Point lerp(const Point& a, const Point& b, double t) {
   return Point(a.xyz() + (b.xyz() - a.xyz()) * t);
 }
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
-Vector lerpUnit(const Vector& a, const Vector& b, double t) {
-  return Vector(a.xyz() + (b.xyz() - a.xyz()) * t).normalized();
+
+/// A unit vector orthogonal to the unit vector a: hint's part orthogonal to a, normalised; when
+/// hint is (nearly) along a, the part of the coordinate axis least along a.
+Double3 orthogonalTo(const Double3& a, const Double3& hint) {
+  Double3 rest = hint - a * hint.dot(a);
+  if (rest.lengthSquared() <= 1e-20 * hint.lengthSquared()) {  // a zero hint included
+    const Double3 axis = std::fabs(a.x) <= std::fabs(a.y) && std::fabs(a.x) <= std::fabs(a.z)
+                             ? Double3{1, 0, 0}
+                         : std::fabs(a.y) <= std::fabs(a.z) ? Double3{0, 1, 0}
+                                                            : Double3{0, 0, 1};
+    rest = axis - a * axis.dot(a);
+  }
+  return rest / std::sqrt(rest.lengthSquared());
+}
+
+/// The unit vector a fraction t of the way from the unit vector a to the unit vector b along
+/// the great circle through them (spherical interpolation: the angle turned grows evenly with
+/// t). Opposite vectors have no one great circle: the turn is then towards `across` (its part
+/// orthogonal to a), so that a path between opposite directions turns about the up vector
+/// instead of passing through a zero direction, as a straight interpolation would.
+Vector slerpUnit(const Vector& a, const Vector& b, double t, const Double3& across) {
+  const double cosine = std::clamp(a.dot(b), -1.0, 1.0);
+  const double angle = std::acos(cosine);
+  const Double3 rest = b.xyz() - a.xyz() * cosine;  // b's part orthogonal to a
+  const double restLength = std::sqrt(rest.lengthSquared());
+  const Double3 towards = restLength > 1e-12 ? rest / restLength : orthogonalTo(a.xyz(), across);
+  return Vector(a.xyz() * std::cos(angle * t) + towards * std::sin(angle * t)).normalized();
 }
 
 /// The unit direction a camera looks along.
@@ -102,13 +128,16 @@ std::vector<CameraSpec> viewPathCameras(const std::vector<CameraSpec>& views, in
     const CameraSpec &a = views[seg], &b = views[seg + 1];
     CameraSpec c = a;
     c.location = lerp(a.location, b.location, t);
-    Vector up = lerpUnit(a.up.normalized(), b.up.normalized(), t);
+    const Vector aTo = directionOf(a);
+    // Opposite up vectors turn through the direction's side; opposite directions about the up.
+    Vector up = slerpUnit(a.up.normalized(), b.up.normalized(), t,
+                          aTo.xyz().cross(a.up.normalized().xyz()));
     if (a.target && b.target) {
       c.target = lerp(*a.target, *b.target, t);
       c.to.reset();
     } else {
-      const Vector to = lerpUnit(directionOf(a), directionOf(b), t);
-      up = (up - to * up.dot(to)).normalized();  // orthogonal to the direction, as it must be
+      const Vector to = slerpUnit(aTo, directionOf(b), t, a.up.normalized().xyz().cross(aTo.xyz()));
+      up = Vector(orthogonalTo(to.xyz(), up.xyz()));  // orthogonal to the direction, as it must be
       c.to = to;
       c.target.reset();
     }
