@@ -128,15 +128,14 @@ std::vector<CameraSpec> viewPathCameras(const std::vector<CameraSpec>& views, in
     const CameraSpec &a = views[seg], &b = views[seg + 1];
     CameraSpec c = a;
     c.location = lerp(a.location, b.location, t);
-    const Vector aTo = directionOf(a);
+    const Vector aTo = directionOf(a), aUp = a.up.normalized();
     // Opposite up vectors turn through the direction's side; opposite directions about the up.
-    Vector up = slerpUnit(a.up.normalized(), b.up.normalized(), t,
-                          aTo.xyz().cross(a.up.normalized().xyz()));
+    Vector up = slerpUnit(aUp, b.up.normalized(), t, aTo.xyz().cross(aUp.xyz()));
     if (a.target && b.target) {
       c.target = lerp(*a.target, *b.target, t);
       c.to.reset();
     } else {
-      const Vector to = slerpUnit(aTo, directionOf(b), t, a.up.normalized().xyz().cross(aTo.xyz()));
+      const Vector to = slerpUnit(aTo, directionOf(b), t, aUp.xyz().cross(aTo.xyz()));
       up = Vector(orthogonalTo(to.xyz(), up.xyz()));  // orthogonal to the direction, as it must be
       c.to = to;
       c.target.reset();
