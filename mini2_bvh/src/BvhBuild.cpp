@@ -23,15 +23,15 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
-#include <exception>
+#include <condition_variable>
+#include <deque>
 #include <mutex>
-#include <system_error>
 #include <thread>
 #include <utility>
 #include <variant>
 
+#include "Concurrently.h"
 #include "bvh/BoundingBox.h"
 #include "bvh/Bvh.h"
 
@@ -43,6 +43,12 @@ struct BuildRecord {
   FloatBox box;
   std::uint32_t shape;
   bool sphere;  ///< kept here so that making a leaf never reads the (large) shapes again
+
+  /// Left unset: the records' array is made at its size, and each build thread writes (and
+  /// first touches) its own part of it; every record is written before it is read.
+  BuildRecord() noexcept {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
+  BuildRecord(const FloatBox& b, std::uint32_t s, bool isSphere) noexcept
+      : box(b), shape(s), sphere(isSphere) {}
 };
 static_assert(sizeof(BuildRecord) == 32, "a build record is 32 bytes");
 
@@ -120,29 +126,30 @@ class Builder {
         sphereShapes_(sphereShapes),
         otherShapes_(otherShapes) {}
 
-  /// Builds the tree over every record on up to `threads` threads; returns the deepest leaf's
-  /// depth. The tree is the same, node for node, whatever the number of threads:
-  ///  1. the top levels are split here, on the calling thread, down to ranges of at most
-  ///     `grain` records, into a skeleton whose leaves are subtrees still to build (tasks);
-  ///  2. each task is built by a Builder of its own into arrays of its own (offsets relative
-  ///     to them), the threads taking the tasks in turn; the tasks' ranges of records are
-  ///     disjoint, so no two threads touch the same record;
-  ///  3. the skeleton is written depth-first, each task's nodes and primitives appended where
+  /// Builds the tree over every record (whose bounds are `all`) on up to `threads` threads;
+  /// returns the deepest leaf's depth. The tree is the same, node for node, whatever the number
+  /// of threads:
+  ///  1. the top levels are split down to ranges of at most `grain` records, into a skeleton
+  ///     whose leaves are subtrees still to build (tasks); each task is built by a Builder of
+  ///     its own into arrays of its own (offsets relative to them). Splitting a range and
+  ///     building a task are jobs that the threads take from one list as they come free, so
+  ///     that a thread done with its side of an uneven split builds tasks of the other side
+  ///     while it is still being split; the ranges of the jobs in flight are disjoint, so no
+  ///     two threads touch the same record;
+  ///  2. the skeleton is written depth-first, each task's nodes and primitives appended where
   ///     a one-thread build writes them, their offsets moved by what comes before.
   /// Every split is chosen from the records of its range alone, in the same order either way,
-  /// so steps 1 and 2 choose exactly the splits of a one-thread build (BvhBuildTests checks it).
-  int build(int threads) {
+  /// so step 1 chooses exactly the splits of a one-thread build (BvhBuildTests checks it).
+  int build(int threads, const Bounds& all) {
     const auto n = static_cast<std::uint32_t>(records_.size());
-    const Bounds all = boundsOf(0, n);
     if (threads <= 1 || n < 2 * PARALLEL_GRAIN_MIN) {
       buildNode(0, n, 0, all);
       return maxDepth_;
     }
     const std::uint32_t grain = std::max<std::uint32_t>(PARALLEL_GRAIN_MIN, n / TASKS_PER_BUILD);
-    std::vector<SkeletonNode> skeleton;
-    std::vector<Task> tasks;
-    split(0, n, 0, all, grain, skeleton, tasks);
-    runTasks(tasks, threads);
+    std::deque<SkeletonNode> skeleton;
+    std::deque<Task> tasks;
+    buildTop(all, grain, threads, skeleton, tasks);
     // The records are done with (the tasks hold every leaf's primitives): freed before the
     // tasks' arrays are copied into the tree, so that the two do not add up at the peak.
     std::vector<BuildRecord>().swap(records_);
@@ -154,9 +161,9 @@ class Builder {
  private:
   /// The parallel build's top phase stops at ranges of at most n / TASKS_PER_BUILD records:
   /// more tasks than threads, so that a thread that drew a large subtree is balanced by the
-  /// others, yet few levels split on one thread (each level is a pass over all n records; on
-  /// the 10^6-triangle teapot on 2 cores, 8, 16 and 64 tasks built within the machine's noise). No range below
-  /// PARALLEL_GRAIN_MIN becomes a task of its own (a thread's start costs more than its build).
+  /// others, yet few levels split in the top phase (on the 10^6-triangle teapot on 2 cores, 8,
+  /// 16 and 64 tasks built within the machine's noise). No range below PARALLEL_GRAIN_MIN
+  /// becomes a task of its own (a thread's start costs more than its build).
   static constexpr std::uint32_t TASKS_PER_BUILD = 16;
   static constexpr std::uint32_t PARALLEL_GRAIN_MIN = 4096;
 
@@ -176,72 +183,93 @@ class Builder {
     std::int32_t task = -1;  ///< the task's index, or -1 for an interior node
     std::uint32_t first = 0, second = 0;
   };
+  /// A range of the top phase still to split, and the skeleton node it becomes.
+  struct TopRange {
+    std::uint32_t begin, end;
+    int depth;
+    Bounds bounds;
+    std::uint32_t node;
+  };
 
-  /// Step 1 for records [begin, end): returns the skeleton index of their node.
-  std::uint32_t split(std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds,
-                      std::uint32_t grain, std::vector<SkeletonNode>& skeleton,
-                      std::vector<Task>& tasks) {
-    const auto index = static_cast<std::uint32_t>(skeleton.size());
-    skeleton.emplace_back();
-    const Split s = end - begin <= grain ? Split{} : chooseSplit(begin, end, bounds, depth);
-    if (s.leaf) {  // a small range, or a leaf: its Task chooses the same again
-      skeleton[index].task = static_cast<std::int32_t>(tasks.size());
-      tasks.push_back(Task{begin, end, depth, bounds, {}, {}, {}, 0});
-      return index;
-    }
-    const std::uint32_t first = split(begin, s.mid, depth + 1, s.left, grain, skeleton, tasks);
-    const std::uint32_t second = split(s.mid, end, depth + 1, s.right, grain, skeleton, tasks);
-    skeleton[index] = SkeletonNode{bounds.box, s.axis, -1, first, second};
-    return index;
-  }
-
-  /// Step 2: the tasks on `threads` threads (the calling thread one of them).
-  void runTasks(std::vector<Task>& tasks, int threads) {
-    // The largest first, so that the last task to start is a small one (the threads then end
-    // together); the order of building changes nothing in the tree.
-    std::vector<std::size_t> order(tasks.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&tasks](std::size_t a, std::size_t b) {
-      return tasks[a].end - tasks[a].begin > tasks[b].end - tasks[b].begin;
-    });
-    std::atomic<std::size_t> next{0};
-    // The first exception a thread meets (std::bad_alloc on a huge scene) stops every thread
-    // from taking more tasks and is thrown again on the calling thread, after the joins.
-    std::mutex failure;
-    std::exception_ptr error;
-    auto work = [&] {
-      try {
-        for (std::size_t k; (k = next.fetch_add(1)) < order.size();) {
-          Task& t = tasks[order[k]];
-          // Address space for the most nodes a range can make (2n - 1, and two more per leaf
-          // of both kinds): only the nodes written take memory, and no array is copied growing.
-          const std::size_t n = t.end - t.begin;
-          t.nodes.reserve(3 * n);
-          Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
-          b.buildNode(t.begin, t.end, t.depth, t.bounds);
-          t.maxDepth = b.maxDepth_;
-        }
-      } catch (...) {
-        next = order.size();
-        const std::lock_guard<std::mutex> lock(failure);
-        if (!error) error = std::current_exception();
-      }
+  /// Step 1 on `threads` threads (the calling thread one of them): the skeleton, root first,
+  /// and every task built. (Deques: a task or node being filled by one thread stays where it is
+  /// while another thread appends.)
+  void buildTop(const Bounds& all, std::uint32_t grain, int threads,
+                std::deque<SkeletonNode>& skeleton, std::deque<Task>& tasks) {
+    std::mutex lock;
+    std::condition_variable changed;
+    std::vector<TopRange> splits;     // ranges still to split, the last first
+    std::vector<std::size_t> builds;  // tasks still to build: a heap, the largest on top
+    const auto smaller = [&tasks](std::size_t a, std::size_t b) {
+      return tasks[a].end - tasks[a].begin < tasks[b].end - tasks[b].begin;
     };
-    std::vector<std::thread> helpers;
-    const int extra = std::min<int>(threads, static_cast<int>(tasks.size())) - 1;
-    try {
-      for (int i = 0; i < extra; ++i) helpers.emplace_back(work);
-    } catch (const std::system_error&) {
-      // No more threads to be had: the ones started and this one build it all.
-    }
-    work();
-    for (std::thread& h : helpers) h.join();
-    if (error) std::rethrow_exception(error);
+    int busy = 0;         // threads in a job
+    bool failed = false;  // a job threw: the others take no more
+    skeleton.emplace_back();
+    splits.push_back(TopRange{0, static_cast<std::uint32_t>(records_.size()), 0, all, 0});
+    // Splits first (each gives the threads more jobs), then the largest task first, so that
+    // the last job to start is a small one and the threads end together.
+    build::concurrently(threads, [&](int) {
+      std::unique_lock<std::mutex> held(lock);
+      for (;;) {
+        changed.wait(held,
+                     [&] { return failed || !splits.empty() || !builds.empty() || busy == 0; });
+        if (failed || (splits.empty() && builds.empty())) return;  // failed, or all done
+        ++busy;
+        try {
+          if (!splits.empty()) {
+            const TopRange r = splits.back();
+            splits.pop_back();
+            held.unlock();
+            const Split s =
+                r.end - r.begin <= grain ? Split{} : chooseSplit(r.begin, r.end, r.bounds, r.depth);
+            held.lock();
+            if (s.leaf) {  // a small range, or a leaf: its Task chooses the same again
+              skeleton[r.node].task = static_cast<std::int32_t>(tasks.size());
+              tasks.push_back(Task{r.begin, r.end, r.depth, r.bounds, {}, {}, {}, 0});
+              builds.push_back(tasks.size() - 1);
+              std::push_heap(builds.begin(), builds.end(), smaller);
+            } else {
+              const auto first = static_cast<std::uint32_t>(skeleton.size());
+              skeleton.resize(skeleton.size() + 2);
+              skeleton[r.node] = SkeletonNode{r.bounds.box, s.axis, -1, first, first + 1};
+              splits.push_back(TopRange{s.mid, r.end, r.depth + 1, s.right, first + 1});
+              splits.push_back(TopRange{r.begin, s.mid, r.depth + 1, s.left, first});
+            }
+          } else {
+            std::pop_heap(builds.begin(), builds.end(), smaller);
+            Task& t = tasks[builds.back()];
+            builds.pop_back();
+            held.unlock();
+            buildTask(t);
+            held.lock();
+          }
+        } catch (...) {
+          if (!held.owns_lock()) held.lock();
+          failed = true;
+          --busy;
+          changed.notify_all();
+          throw;  // concurrently throws it again after the joins
+        }
+        --busy;
+        changed.notify_all();
+      }
+    });
   }
 
-  /// Step 3 for skeleton node `index`: returns the index of its node in the tree.
-  std::uint32_t emit(std::uint32_t index, const std::vector<SkeletonNode>& skeleton,
-                     std::vector<Task>& tasks) {
+  /// Builds a task's subtree into its arrays.
+  void buildTask(Task& t) const {
+    // Address space for the most nodes a range can make (2n - 1, and two more per leaf of both
+    // kinds): only the nodes written take memory, and no array is copied growing.
+    t.nodes.reserve(3 * static_cast<std::size_t>(t.end - t.begin));
+    Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
+    b.buildNode(t.begin, t.end, t.depth, t.bounds);
+    t.maxDepth = b.maxDepth_;
+  }
+
+  /// Step 2 for skeleton node `index`: returns the index of its node in the tree.
+  std::uint32_t emit(std::uint32_t index, const std::deque<SkeletonNode>& skeleton,
+                     std::deque<Task>& tasks) {
     const SkeletonNode& s = skeleton[index];
     const auto at = static_cast<std::uint32_t>(nodes_.size());
     if (s.task < 0) {
@@ -255,9 +283,9 @@ class Builder {
     const auto sphereBase = static_cast<std::uint32_t>(sphereShapes_.size());
     const auto otherBase = static_cast<std::uint32_t>(otherShapes_.size());
     for (BvhNode node : t.nodes) {
-      node.offset += node.kind == BvhNode::Kind::Interior ? at
+      node.offset += node.kind == BvhNode::Kind::Interior  ? at
                      : node.kind == BvhNode::Kind::Spheres ? sphereBase
-                                                            : otherBase;
+                                                           : otherBase;
       nodes_.push_back(node);
     }
     sphereShapes_.insert(sphereShapes_.end(), t.spheres.begin(), t.spheres.end());
@@ -477,26 +505,80 @@ class Builder {
   int maxDepth_ = 0;
 };
 
-}  // namespace
+/// What one chunk of the primitives makes of its records (Bvh's constructor).
+struct RecordChunk {
+  std::size_t written = 0;               ///< records, from the chunk's first index on
+  std::vector<std::uint32_t> unbounded;  ///< its primitives without a (float) box
+  std::size_t spheres = 0;
+  Bounds bounds;  ///< of its records
+};
 
-Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primitives_(primitives) {
+/// The record of every bounded primitive of [begin, end), written from records[begin] on.
+void makeRecords(Primitives primitives, std::uint32_t begin, std::uint32_t end,
+                 BuildRecord* records, RecordChunk& chunk) {
   const std::span<const Geometry> shapes = primitives.shapes();
-  std::vector<BuildRecord> records;
-  records.reserve(primitives.size());
-  std::size_t sphereCount = 0;
-  for (std::uint32_t i = 0; i < primitives.size(); ++i) {
+  BuildRecord* out = records + begin;
+  for (std::uint32_t i = begin; i < end; ++i) {
     // A shape without a box, or whose box does not fit in floats (coordinates beyond ±3.4e38),
     // is tested on its own, like a plane.
     const std::optional<Aabb> box = boundingBox(primitives, i);
     const FloatBox stored = box ? conservativeBox(*box) : FloatBox::empty();
     if (!box || !isFinite(stored)) {
-      unbounded_.push_back(i);
+      chunk.unbounded.push_back(i);
       continue;
     }
     const bool sphere = primitives.isShape(i) && std::holds_alternative<Sphere>(shapes[i]);
-    records.push_back(BuildRecord{stored, i, sphere});
-    sphereCount += sphere ? 1 : 0;
+    *out = BuildRecord(stored, i, sphere);
+    chunk.bounds.add(*out);
+    ++out;
+    chunk.spheres += sphere ? 1 : 0;
   }
+  chunk.written = static_cast<std::size_t>(out - (records + begin));
+}
+
+}  // namespace
+
+int Bvh::buildThreads(int threads) noexcept {
+  return threads > 0 ? threads
+                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primitives_(primitives) {
+  const int threads = buildThreads(options.threads);
+  // The records of consecutive chunks of the primitives are made at once, one chunk per
+  // thread, each written where its first primitive is; the chunks are then moved together, so
+  // that the records (and the unbounded shapes) come in the primitives' order whatever the
+  // number of threads. (One chunk per RECORDS_PER_THREAD primitives at least: below that a
+  // thread's start costs more than its chunk.)
+  constexpr std::size_t RECORDS_PER_THREAD = 16384;
+  const std::size_t count = primitives.size();
+  const int chunks = static_cast<int>(
+      std::clamp<std::size_t>(count / RECORDS_PER_THREAD, 1, static_cast<std::size_t>(threads)));
+  std::vector<BuildRecord> records(count);
+  std::vector<RecordChunk> made(static_cast<std::size_t>(chunks));
+  build::concurrently(chunks, [&](int k) {
+    makeRecords(primitives, static_cast<std::uint32_t>(build::chunkBegin(count, chunks, k)),
+                static_cast<std::uint32_t>(build::chunkBegin(count, chunks, k + 1)), records.data(),
+                made[static_cast<std::size_t>(k)]);
+  });
+  std::size_t unboundedCount = 0;  // reserved at once: its capacity too is the one-thread build's
+  for (const RecordChunk& chunk : made) unboundedCount += chunk.unbounded.size();
+  unbounded_.reserve(unboundedCount);
+  std::size_t written = 0, sphereCount = 0;
+  Bounds all;
+  for (int k = 0; k < chunks; ++k) {
+    const RecordChunk& chunk = made[static_cast<std::size_t>(k)];
+    const auto from =
+        records.begin() + static_cast<std::ptrdiff_t>(build::chunkBegin(count, chunks, k));
+    const auto to = records.begin() + static_cast<std::ptrdiff_t>(written);
+    if (to != from)
+      std::copy(from, from + static_cast<std::ptrdiff_t>(chunk.written), to);  // leftwards
+    written += chunk.written;
+    sphereCount += chunk.spheres;
+    all.add(chunk.bounds);
+    unbounded_.insert(unbounded_.end(), chunk.unbounded.begin(), chunk.unbounded.end());
+  }
+  records.resize(written);
   if (records.empty()) return;
 
   // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The reservation
@@ -504,25 +586,30 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   nodes_.reserve(2 * records.size() - 1);
   sphereShapes_.reserve(sphereCount);
   otherShapes_.reserve(records.size() - sphereCount);
-  const int threads = options.threads > 0
-                          ? options.threads
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth)
-               .build(threads);
+               .build(threads, all);
 
   // The records are done with before the compact spheres are made: the two never coexist.
   std::vector<BuildRecord>().swap(records);
   nodes_.shrink_to_fit();
 }
 
-void Bvh::makeCompactSpheres() {
+void Bvh::makeCompactSpheres(int threads) {
+  // A gather from the scattered shapes: consecutive chunks of the spheres at once, one chunk
+  // per thread (below SPHERES_PER_THREAD a thread's start costs more than its chunk).
+  constexpr std::size_t SPHERES_PER_THREAD = 16384;
   const std::span<const Geometry> shapes = primitives_.shapes();
-  spheres_.clear();
-  spheres_.reserve(sphereShapes_.size());
-  for (std::uint32_t i : sphereShapes_) {
-    const Sphere& s = std::get<Sphere>(shapes[i]);
-    spheres_.push_back(CompactSphere{s.center().xyz(), s.radius()});
-  }
+  const std::size_t count = sphereShapes_.size();
+  spheres_.assign(count, CompactSphere{});
+  const int chunks = static_cast<int>(
+      std::clamp<std::size_t>(count / SPHERES_PER_THREAD, 1, static_cast<std::size_t>(threads)));
+  build::concurrently(chunks, [&](int k) {
+    const std::size_t end = build::chunkBegin(count, chunks, k + 1);
+    for (std::size_t i = build::chunkBegin(count, chunks, k); i < end; ++i) {
+      const Sphere& s = std::get<Sphere>(shapes[sphereShapes_[i]]);
+      spheres_[i] = CompactSphere{s.center().xyz(), s.radius()};
+    }
+  });
 }
 
 }  // namespace rt

@@ -247,7 +247,7 @@ WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options)
   collapser.collapse(0, 0);
   depth_ = collapser.depth();
   std::vector<BvhNode>().swap(binary_.nodes_);
-  binary_.makeCompactSpheres();
+  binary_.makeCompactSpheres(Bvh::buildThreads(options.threads));
 }
 
 std::span<const std::uint32_t> WideBvh::leafShapes(const WideNode& node, int slot) const noexcept {

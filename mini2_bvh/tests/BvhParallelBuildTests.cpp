@@ -18,14 +18,16 @@ namespace rt {
 namespace {
 
 /// The tree of geometries built on `threads` threads.
-Bvh buildOn(const Geometries& geometries, int threads, int sahMaxDepth = BvhBuildOptions{}.sahMaxDepth) {
+Bvh buildOn(const Geometries& geometries, int threads,
+            int sahMaxDepth = BvhBuildOptions{}.sahMaxDepth) {
   BvhBuildOptions options;
   options.threads = threads;
   options.sahMaxDepth = sahMaxDepth;
   return Bvh(geometries, options);
 }
 
-/// Every node's bytes, every leaf's primitives, the unbounded list and the depth agree.
+/// Every node's bytes, every leaf's primitives, the compact spheres' bytes, the unbounded list and
+/// the depth agree.
 void expectSameTree(const Bvh& a, const Bvh& b) {
   ASSERT_EQ(a.nodes().size(), b.nodes().size());
   for (std::size_t i = 0; i < a.nodes().size(); ++i) {
@@ -34,6 +36,9 @@ void expectSameTree(const Bvh& a, const Bvh& b) {
     const auto pa = a.leafShapes(a.nodes()[i]), pb = b.leafShapes(b.nodes()[i]);
     ASSERT_TRUE(std::equal(pa.begin(), pa.end(), pb.begin(), pb.end())) << "leaf " << i;
   }
+  const auto sa = a.compactSpheres(), sb = b.compactSpheres();
+  ASSERT_EQ(sa.size(), sb.size());
+  EXPECT_EQ(0, std::memcmp(sa.data(), sb.data(), sa.size_bytes()));
   const auto ua = a.unboundedShapes(), ub = b.unboundedShapes();
   EXPECT_TRUE(std::equal(ua.begin(), ua.end(), ub.begin(), ub.end()));
   EXPECT_EQ(a.depth(), b.depth());
@@ -76,6 +81,46 @@ TEST(BvhParallelBuildTests, smallSceneSameTree) {
   test::Random random(16);
   test::addSpheres(g, random, 200, Aabb(Double3(-1), Double3(1)), 0.01, 0.1);
   expectSameTree(buildOn(g, 1), buildOn(g, 2));
+}
+
+// TC13: a scene large enough for the boxes and the compact spheres to be made in chunks, one
+// per thread (16,384 primitives per thread at least), with unbounded shapes in every chunk:
+// the same tree and compact spheres, the unbounded shapes in the scene's order, and the same
+// closest hit (t and index) for every query.
+TEST(BvhParallelBuildTests, chunkedRecordsAndSpheresSameTree) {
+  Geometries g;
+  test::Random random(17);
+  const Aabb box(Double3(-8, -8, -8), Double3(8, 8, 8));
+  std::vector<std::uint32_t> unbounded;
+  for (int part = 0; part < 3; ++part) {
+    test::addSpheres(g, random, 20000, box, 0.005, 0.05);
+    test::addMixedShapes(g, random, 300, box);
+    const auto first = static_cast<std::uint32_t>(g.size());
+    test::addUnbounded(g, box);
+    for (auto i = first; i < g.size(); ++i) unbounded.push_back(i);
+  }
+  ASSERT_EQ(unbounded.size(), 12u);
+  ASSERT_EQ(g.size(), 60912u);
+  const Bvh one = buildOn(g, 1);
+  const auto u = one.unboundedShapes();
+  EXPECT_TRUE(std::equal(u.begin(), u.end(), unbounded.begin(), unbounded.end()));
+  const std::vector<test::Query> queries = test::randomQueries(random, 3000, box);
+  for (int threads : {2, 3}) {
+    SCOPED_TRACE(threads);
+    const Bvh many = buildOn(g, threads);
+    expectSameTree(one, many);
+    int hits = 0;
+    for (const test::Query& q : queries) {
+      const std::optional<Hit> a = one.closestHit(q.ray, q.tMax),
+                               b = many.closestHit(q.ray, q.tMax);
+      ASSERT_EQ(a.has_value(), b.has_value());
+      if (!a) continue;
+      ++hits;
+      EXPECT_EQ(a->t, b->t);
+      EXPECT_EQ(a->geometry, b->geometry);
+    }
+    EXPECT_GT(hits, 1500);
+  }
 }
 
 // TC12: only a mesh (no spheres: every leaf of the "other shapes" kind).

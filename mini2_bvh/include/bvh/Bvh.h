@@ -65,7 +65,7 @@ class Bvh final : public Intersectable {
   ///        indices are the primitives' numbers.
   explicit Bvh(Primitives primitives, BvhBuildOptions options = {})
       : Bvh(primitives, options, SpheresLater{}) {
-    makeCompactSpheres();
+    makeCompactSpheres(buildThreads(options.threads));
   }
   explicit Bvh(std::span<const Geometry> shapes, BvhBuildOptions options = {})
       : Bvh(Primitives(shapes), options) {}
@@ -82,24 +82,26 @@ class Bvh final : public Intersectable {
   bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                   QueryCounts* counts = nullptr) const override;
 
+  /// A sphere as the leaves store it: 32 bytes instead of a 104-byte Geometry, for the cache.
+  struct CompactSphere {
+    Double3 centre;
+    double radius;
+  };
+
   // ---- Inspection: for the tests, the benchmark and the README's figures ----
 
   /// The nodes, root first; empty when no shape is bounded.
   std::span<const BvhNode> nodes() const noexcept { return nodes_; }
   /// The shapes (indices into the scene) of a leaf node, in their stored order.
   std::span<const std::uint32_t> leafShapes(const BvhNode& leaf) const noexcept;
+  /// The sphere leaves' copies of their spheres, in leaf order (leafShapes' order).
+  std::span<const CompactSphere> compactSpheres() const noexcept { return spheres_; }
   /// The unbounded shapes (planes, tubes; shapes beyond the float range), tested outside the tree.
   std::span<const std::uint32_t> unboundedShapes() const noexcept { return unbounded_; }
   /// The deepest leaf's depth (the root has depth 0; 0 for an empty tree).
   int depth() const noexcept { return depth_; }
   /// Bytes the Bvh holds on the heap (nodes, compact spheres, index arrays).
   std::size_t memoryBytes() const noexcept;
-
-  /// A sphere as the leaves store it: 32 bytes instead of a 104-byte Geometry, for the cache.
-  struct CompactSphere {
-    Double3 centre;
-    double radius;
-  };
 
  private:
   /// The wide BVH collapses this tree's nodes and walks down to its leaves (forEachPrimitive).
@@ -110,8 +112,11 @@ class Bvh final : public Intersectable {
   /// (for 10^6 stars, 30 MiB of spheres and 21 MiB of nodes).
   struct SpheresLater {};
   Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater);
-  /// The sphere leaves' copies of their spheres (spheres_), from sphereShapes_.
-  void makeCompactSpheres();
+  /// The sphere leaves' copies of their spheres (spheres_), from sphereShapes_, on `threads`
+  /// threads.
+  void makeCompactSpheres(int threads);
+  /// The threads a build uses for BvhBuildOptions::threads (0: one per core).
+  static int buildThreads(int threads) noexcept;
 
   /// Walks the nodes whose box the ray meets before limit() (asked again at every node, so a
   /// closest-hit query can shrink it), near child first, calling leaf(node) at each leaf reached;
