@@ -3,7 +3,7 @@
 // Each primitive enters the build as a 32-byte record (its conservative float box, its index in
 // the scene and whether it is a sphere). A node's range of records is split in place
 // (std::partition), so the build allocates nothing but the records, the node array and the leaves'
-// index arrays.
+// index arrays (and, on several threads, each subtree's own arrays and the top phase's lists).
 //
 // The surface-area heuristic (Goldsmith and Salmon 1987, MacDonald and Booth 1990): a ray that
 // meets a node's box B meets a child's box B' inside it with probability SA(B')/SA(B), so
@@ -139,7 +139,7 @@ class Builder {
   ///  2. the skeleton is written depth-first, each task's nodes and primitives appended where
   ///     a one-thread build writes them, their offsets moved by what comes before.
   /// Every split is chosen from the records of its range alone, in the same order either way,
-  /// so step 1 chooses exactly the splits of a one-thread build (BvhBuildTests checks it).
+  /// so step 1 chooses exactly the splits of a one-thread build (BvhParallelBuildTests checks it).
   int build(int threads, const Bounds& all) {
     const auto n = static_cast<std::uint32_t>(records_.size());
     if (threads <= 1 || n < 2 * PARALLEL_GRAIN_MIN) {
@@ -548,12 +548,9 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   // The records of consecutive chunks of the primitives are made at once, one chunk per
   // thread, each written where its first primitive is; the chunks are then moved together, so
   // that the records (and the unbounded shapes) come in the primitives' order whatever the
-  // number of threads. (One chunk per RECORDS_PER_THREAD primitives at least: below that a
-  // thread's start costs more than its chunk.)
-  constexpr std::size_t RECORDS_PER_THREAD = 16384;
+  // number of threads (build::chunkCount: a chunk per 16,384 primitives at least).
   const std::size_t count = primitives.size();
-  const int chunks = static_cast<int>(
-      std::clamp<std::size_t>(count / RECORDS_PER_THREAD, 1, static_cast<std::size_t>(threads)));
+  const int chunks = build::chunkCount(count, threads);
   std::vector<BuildRecord> records(count);
   std::vector<RecordChunk> made(static_cast<std::size_t>(chunks));
   build::concurrently(chunks, [&](int k) {
@@ -596,13 +593,11 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
 
 void Bvh::makeCompactSpheres(int threads) {
   // A gather from the scattered shapes: consecutive chunks of the spheres at once, one chunk
-  // per thread (below SPHERES_PER_THREAD a thread's start costs more than its chunk).
-  constexpr std::size_t SPHERES_PER_THREAD = 16384;
+  // per thread (build::chunkCount).
   const std::span<const Geometry> shapes = primitives_.shapes();
   const std::size_t count = sphereShapes_.size();
   spheres_.assign(count, CompactSphere{});
-  const int chunks = static_cast<int>(
-      std::clamp<std::size_t>(count / SPHERES_PER_THREAD, 1, static_cast<std::size_t>(threads)));
+  const int chunks = build::chunkCount(count, threads);
   build::concurrently(chunks, [&](int k) {
     const std::size_t end = build::chunkBegin(count, chunks, k + 1);
     for (std::size_t i = build::chunkBegin(count, chunks, k); i < end; ++i) {

@@ -44,6 +44,18 @@ void concurrently(int jobs, const Job& job) {
   if (error) std::rethrow_exception(error);
 }
 
+/// The fewest items a chunk of its own is worth: below that, a thread's start costs more than
+/// the chunk's work (a box or a sphere copied per item).
+inline constexpr std::size_t MIN_CHUNK = 16384;
+
+/// How many chunks `count` items are cut into on up to `threads` threads: one per MIN_CHUNK
+/// items, at least one, at most `threads`.
+constexpr int chunkCount(std::size_t count, int threads) noexcept {
+  const std::size_t most = threads > 1 ? static_cast<std::size_t>(threads) : 1;
+  const std::size_t chunks = count / MIN_CHUNK;
+  return static_cast<int>(chunks < 1 ? 1 : chunks > most ? most : chunks);
+}
+
 /// Where chunk k of `chunks` consecutive chunks of [0, count) begins (chunk k ends where chunk
 /// k + 1 begins; chunk `chunks` begins at count): the chunks' sizes differ by at most one.
 constexpr std::size_t chunkBegin(std::size_t count, int chunks, int k) noexcept {
