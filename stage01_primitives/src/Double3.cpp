@@ -11,8 +11,6 @@ namespace rt {
 const Double3 Double3::ZERO{0, 0, 0};
 const Double3 Double3::ONE{1, 1, 1};
 
-bool Double3::isZero() const { return rt::isZero(x) && rt::isZero(y) && rt::isZero(z); }
-
 bool Double3::isFinite() const { return std::isfinite(x) && std::isfinite(y) && std::isfinite(z); }
 
 bool Double3::operator==(const Double3& o) const { return (*this - o).isZero(); }

@@ -26,8 +26,8 @@ double magnitude(const Double3& p) noexcept {
 }
 
 /// The parameter where the ray meets the plane through q with normal n, or NaN when the ray is
-/// parallel to the plane (alignZero(n·dir) == 0) or starts on it. Roots::add drops NaN and
-/// t <= 0.
+/// parallel to the plane (alignZero(n·dir) == 0), starts on it, or meets it behind its head
+/// (t < 0). Roots::add drops NaN and t <= 0.
 ///
 /// "Starts on it" is decided relative to the coordinates' size: a head computed as a hit point
 /// far from the origin lies off the plane by rounding error of about ε·|coordinates|, and a
@@ -42,6 +42,8 @@ double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
   const double roundoff =
       8 * std::numeric_limits<double>::epsilon() * std::max(magnitude(q), magnitude(p0));
   if (std::abs(numerator) <= roundoff) return NAN;
+  // Opposite signs: the root is behind the head, which every caller drops; skip the division.
+  if ((numerator > 0) != (nd > 0)) return NAN;
   return numerator / nd;
   // END SOLUTION
 }

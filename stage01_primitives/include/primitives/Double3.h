@@ -6,6 +6,8 @@
 #include <iosfwd>
 #include <string>
 
+#include "primitives/Util.h"
+
 namespace rt {
 
 struct Double3 {
@@ -31,8 +33,8 @@ struct Double3 {
 
   /// Course semantics: true only when all three components are below k.
   constexpr bool lowerThan(double k) const { return x < k && y < k && z < k; }
-  /// True when every component isZero.
-  bool isZero() const;
+  /// True when every component isZero (inline: the sphere test asks it of every ray).
+  bool isZero() const noexcept { return rt::isZero(x) && rt::isZero(y) && rt::isZero(z); }
   /// True when every component is exactly 0 (or −0): the test for "nothing passes" (a zero
   /// coefficient, a zero weight, a zero direction), where isZero's threshold would be wrong.
   constexpr bool isExactlyZero() const noexcept { return x == 0 && y == 0 && z == 0; }
