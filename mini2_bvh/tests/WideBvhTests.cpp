@@ -367,6 +367,18 @@ TEST(WideBvhTests, packetsAnswerAsSingleRays) {
   EXPECT_EQ(std::count_if(hits.begin(), hits.end(), [](const auto& h) { return h.has_value(); }),
             80);
   EXPECT_GT(packet.nodesVisited, 0u);
+  // TC03: what a tracer gets through Intersectable: the packets (their counts, which are not
+  // closestHit's ray by ray), the same hits
+  EXPECT_NE(packet, single);
+  const Intersectable& seam = wide;
+  std::vector<std::optional<Hit>> viaSeam(beam.size());
+  QueryCounts seamCounts;
+  seam.closestHits(beam, INFINITE_DISTANCE, viaSeam, &seamCounts);
+  EXPECT_EQ(packet, seamCounts);
+  for (std::size_t i = 0; i < beam.size(); ++i)
+    EXPECT_TRUE(viaSeam[i] && viaSeam[i]->t == hits[i]->t &&
+                viaSeam[i]->geometry == hits[i]->geometry)
+        << i;
   // =============== Boundary Values Tests ==================
   // TC11: no ray; one ray; an empty scene (no tree)
   wide.closestHits({}, INFINITE_DISTANCE, {});

@@ -83,6 +83,12 @@ bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
   return complete;
 }
 
+void Intersectable::closestHits(std::span<const Ray> rays, double tMax,
+                                std::span<std::optional<Hit>> hits,
+                                QueryCounts* counts) const noexcept {
+  for (std::size_t i = 0; i < rays.size(); ++i) hits[i] = closestHit(rays[i], tMax, counts);
+}
+
 std::vector<GeoPoint> Intersectable::findGeoIntersections(const Ray& ray,
                                                           double maxDistance) const {
   // BEGIN SOLUTION: hint: findGeoIntersections, every hit sorted by (t, geometry index)

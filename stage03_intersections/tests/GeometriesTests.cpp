@@ -2,6 +2,8 @@
 // tomi832's data) and its queries: closestHit, forEachHit, findGeoIntersections.
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "intersections/Geometries.h"
@@ -92,6 +94,42 @@ TEST(GeometriesTests, closestHit) {
   EXPECT_FALSE(Geometries().closestHit(kDownAtOrigin).has_value());
 }
 
+TEST(GeometriesTests, closestHitsOfSeveralRays) {
+  const Geometries g{kSquareA, kTriangle, kSphere};
+  const std::vector<Ray> rays{kDownAtOrigin, Ray(Point(0, 0, 1.5), Vector(0, 0, -1)),
+                              Ray(Point(0, 0, 100), Vector(0, 0, 1)),
+                              Ray(Point(7, 7, 5), Vector(0, 0, -1))};
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: each ray's answer is its closestHit, the same bits: the sphere at t = 3, the triangle
+  // at t = 0.5, none, square A at t = 4; the counts are those of the four queries (3 shapes each)
+  std::vector<std::optional<Hit>> found(rays.size());
+  QueryCounts counts;
+  g.closestHits(rays, INFINITE_DISTANCE, found, &counts);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const std::optional<Hit> one = g.closestHit(rays[i]);
+    ASSERT_EQ(one.has_value(), found[i].has_value()) << i;
+    if (one) {
+      EXPECT_TRUE(one->t == found[i]->t && one->geometry == found[i]->geometry) << i;
+    }
+  }
+  ASSERT_TRUE(found[0] && found[1] && !found[2] && found[3]);
+  EXPECT_NEAR(3, found[0]->t, 1e-12);
+  EXPECT_EQ(2u, found[0]->geometry);
+  EXPECT_NEAR(0.5, found[1]->t, 1e-12);
+  EXPECT_EQ(1u, found[1]->geometry);
+  EXPECT_NEAR(4, found[3]->t, 1e-12);
+  EXPECT_EQ(0u, found[3]->geometry);
+  EXPECT_EQ((QueryCounts{12, 0}), counts);
+  // TC02: tMax applies to every ray: at 3.5 only the first two are hit
+  g.closestHits(rays, 3.5, found);
+  EXPECT_TRUE(found[0] && found[1] && !found[2] && !found[3]);
+  // =============== Boundary Values Tests ==================
+  // TC11: no ray: nothing written, nothing counted
+  QueryCounts none;
+  g.closestHits({}, INFINITE_DISTANCE, {}, &none);
+  EXPECT_EQ(QueryCounts{}, none);
+}
+
 TEST(GeometriesTests, forEachHit) {
   const Geometries g{kTriangle, kSphere, kSquareB};
   // TC01: visits every hit within tMax and reports a complete walk
@@ -120,11 +158,11 @@ TEST(GeometriesTests, forEachHit) {
   EXPECT_EQ(visited.size(), 3u);
   // TC11: no hit: the visitor is never called, the walk is complete
   calls = 0;
-  EXPECT_TRUE(g.forEachHit(Ray(Point(0, 0, 100), Vector(0, 0, 1)), INFINITE_DISTANCE,
-                           [&](const Hit&) {
-                             ++calls;
-                             return true;
-                           }));
+  EXPECT_TRUE(
+      g.forEachHit(Ray(Point(0, 0, 100), Vector(0, 0, 1)), INFINITE_DISTANCE, [&](const Hit&) {
+        ++calls;
+        return true;
+      }));
   EXPECT_EQ(calls, 0);
 }
 
@@ -163,7 +201,8 @@ TEST(GeometriesTests, queryCounts) {
   EXPECT_EQ((QueryCounts{6, 0}), counts);
   // TC03: a walk stopped at the first hit (the triangle, shape 0) tested one shape
   QueryCounts walk;
-  g.forEachHit(kDownAtOrigin, INFINITE_DISTANCE, [](const Hit&) { return false; }, &walk);
+  g.forEachHit(
+      kDownAtOrigin, INFINITE_DISTANCE, [](const Hit&) { return false; }, &walk);
   EXPECT_EQ(1u, walk.shapeTests);
   // =============== Boundary Values Tests ==================
   // TC11: no counts given: nothing to add to, nothing breaks
@@ -203,13 +242,13 @@ TEST(GeometriesTests, geometryVariantDispatch) {
   EXPECT_TRUE(hits(Geometry(Plane(Point(0, 0, 0), Vector(0, 0, 1))), ray, {Point(0.25, 0.25, 0)}));
   EXPECT_TRUE(hits(Geometry(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0))), ray,
                    {Point(0.25, 0.25, 0)}));
-  EXPECT_TRUE(hits(Geometry(Polygon({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0),
-                                     Point(0, 1, 0)})),
-                   ray, {Point(0.25, 0.25, 0)}));
+  EXPECT_TRUE(
+      hits(Geometry(Polygon({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)})), ray,
+           {Point(0.25, 0.25, 0)}));
   EXPECT_TRUE(hits(Geometry(Tube(1, zAxis)), Ray(Point(-2, 0, 1), Vector(1, 0, 0)),
                    {Point(-1, 0, 1), Point(1, 0, 1)}));
-  EXPECT_TRUE(hits(Geometry(Cylinder(1, zAxis, 2)), ray,
-                   {Point(0.25, 0.25, 2), Point(0.25, 0.25, 0)}));
+  EXPECT_TRUE(
+      hits(Geometry(Cylinder(1, zAxis, 2)), ray, {Point(0.25, 0.25, 2), Point(0.25, 0.25, 0)}));
 }
 
 }  // namespace

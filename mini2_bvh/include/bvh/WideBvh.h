@@ -117,7 +117,12 @@ class WideBvh final : public Intersectable {
   /// leaf for a ray that has since found a nearer hit, so these can exceed closestHit's).
   /// Allocates nothing.
   void closestHits(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
-                   QueryCounts* counts = nullptr, Simd simd = bestSimd()) const noexcept;
+                   QueryCounts* counts, Simd simd) const noexcept;
+  /// The packets with bestSimd(): what a tracer gets through Intersectable.
+  void closestHits(std::span<const Ray> rays, double tMax, std::span<std::optional<Hit>> hits,
+                   QueryCounts* counts = nullptr) const noexcept override {
+    closestHits(rays, tMax, hits, counts, bestSimd());
+  }
 
   // ---- Inspection: for the tests, the benchmark and the README ----
 

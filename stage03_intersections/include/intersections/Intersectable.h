@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometries/Geometry.h"
@@ -65,6 +66,14 @@ class Intersectable {
   /// @param counts when not null, the query adds what it cost.
   virtual bool forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                           QueryCounts* counts = nullptr) const = 0;
+
+  /// closestHit of several rays: hits[i] = closestHit(rays[i], tMax), the same bits, for every i
+  /// (hits.size() == rays.size()). This version asks closestHit ray by ray; a structure that can
+  /// trace rays together (the wide BVH's packets, mini2) overrides it. The counts may then differ
+  /// from closestHit's, the hits never. Allocates nothing, never throws.
+  virtual void closestHits(std::span<const Ray> rays, double tMax,
+                           std::span<std::optional<Hit>> hits,
+                           QueryCounts* counts = nullptr) const noexcept;
 
   /// The course's findGeoIntersections: every hit in (0, maxDistance], sorted by distance (equal
   /// distances by geometry index).
