@@ -94,10 +94,17 @@ Color WhittedTracer::secondaryEffect(const HitContext& h, const Vector& dir, Sec
 
 Color WhittedTracer::secondaryColor(const HitContext&, const Ray& secondary, SecondaryKind,
                                     int level, const Double3& kkx, SampleContext& ctx) const {
-  // BEGIN SOLUTION: hint: secondaryColor, a counted ray: the background or calcColor(level-1)
+  // BEGIN SOLUTION: hint: secondaryColor, the colour at the ray's closest hit (secondaryHitColor)
+  return secondaryHitColor(
+      secondary, intersector_.closestHit(secondary, INFINITE_DISTANCE, &ctx.counts.queries), level,
+      kkx, ctx);
+  // END SOLUTION
+}
+
+Color WhittedTracer::secondaryHitColor(const Ray& secondary, const std::optional<Hit>& hit,
+                                       int level, const Double3& kkx, SampleContext& ctx) const {
+  // BEGIN SOLUTION: hint: secondaryHitColor, a counted ray: the background or calcColor(level-1)
   ++ctx.counts.secondary;
-  const std::optional<Hit> hit =
-      intersector_.closestHit(secondary, INFINITE_DISTANCE, &ctx.counts.queries);
   // A miss sees the background; the caller weights it by kx (the course's 5785 fix: 5784
   // returned it unweighted).
   if (!hit) return litScene_.background;

@@ -81,6 +81,12 @@ class WhittedTracer : public ShadowTracer {
   virtual Color secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
                                int level, const Double3& kkx, SampleContext& ctx) const;
 
+  /// What secondaryColor returns once the secondary ray's closest hit is known (hit, or nullopt
+  /// for a miss): calcColor(hit, level − 1, kkx), or the background. Counts the ray. A tracer
+  /// that finds the hits of several rays together (Intersectable::closestHits) shades each here.
+  Color secondaryHitColor(const Ray& secondary, const std::optional<Hit>& hit, int level,
+                          const Double3& kkx, SampleContext& ctx) const;
+
   WhittedSettings settings_;
 };
 
