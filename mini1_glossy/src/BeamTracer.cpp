@@ -1,7 +1,13 @@
 #include "glossy/BeamTracer.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <new>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <variant>
 
@@ -24,6 +30,9 @@ BeamTracer::BeamTracer(const LitScene& scene, const Intersectable* accelerator,
                               }},
                    light));
   }
+  together_ =
+      beams_.together && beams_.beamDepth == BeamDepth::FirstBounce &&
+      std::none_of(disks_.begin(), disks_.end(), [](const LightDisk& d) { return d.isArea(); });
 }
 
 Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, SecondaryKind kind,
@@ -37,6 +46,8 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
   // Every ray of the beam leaves from the secondary ray's origin (already shifted to the side
   // the beam goes to: samples on the other side are dropped) and is traced as the Whitted
   // tracer traces one.
+  if (const std::optional<Color> together = beamTogether(from, secondary, beam, level, kkx, ctx))
+    return *together;
   Double3 sum;
   const int count =
       forEachBeamRay(secondary.direction(), from.normal, beam, ctx.random, [&](const Vector& dir) {
@@ -46,6 +57,39 @@ Color BeamTracer::secondaryColor(const HitContext& from, const Ray& secondary, S
       });
   return Color::unchecked(sum / count);
   // END SOLUTION
+}
+
+std::optional<Color> BeamTracer::beamTogether(const HitContext& from, const Ray& secondary,
+                                              const BeamSettings& beam, int level,
+                                              const Double3& kkx, SampleContext& ctx) const {
+  constexpr int MOST = TOGETHER_GRID * TOGETHER_GRID;  // a beam's rays: at most its cells
+  if (!together_ || beam.grid > TOGETHER_GRID) return std::nullopt;
+  const RandomStream start = ctx.random;
+  const RayCounts before = ctx.counts;
+  // Ray has no default constructor: the beam's rays are made in place in raw storage (a Ray is
+  // trivially destructible, so nothing is to be destroyed).
+  alignas(Ray) std::byte storage[sizeof(Ray) * MOST];
+  Ray* const rays = reinterpret_cast<Ray*>(storage);
+  int n = 0;
+  const int count =
+      forEachBeamRay(secondary.direction(), from.normal, beam, ctx.random, [&](const Vector& dir) {
+        ::new (static_cast<void*>(rays + n++)) Ray(Ray::withUnitDirection(secondary.head(), dir));
+      });
+  const std::span<const Ray> beamRays(std::launder(rays), static_cast<std::size_t>(n));
+  std::array<std::optional<Hit>, MOST> hits;
+  const std::span<std::optional<Hit>> beamHits = std::span(hits).first(beamRays.size());
+  intersector_.closestHits(beamRays, INFINITE_DISTANCE, beamHits, &ctx.counts.queries);
+  const RandomStream drawn = ctx.random;
+  Double3 sum;
+  for (std::size_t i = 0; i < beamRays.size(); ++i) {
+    sum = sum + secondaryHitColor(beamRays[i], beamHits[i], level, kkx, ctx).rgb();
+    if (!(ctx.random == drawn)) {  // this shading drew numbers: one by one would differ
+      ctx.random = start;
+      ctx.counts = before;
+      return std::nullopt;
+    }
+  }
+  return Color::unchecked(sum / count);
 }
 
 Double3 BeamTracer::transmittance(const HitContext& h, std::uint32_t lightIndex,

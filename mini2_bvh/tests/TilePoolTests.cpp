@@ -89,23 +89,45 @@ SampledScene sampledScene(std::string name, LitScene scene, const CameraSpec& ca
   return s;
 }
 
+/// The galaxy of 7 arms of 12 stars, its glass's beams of grid x grid cells (distance 12,
+/// radius 0.3).
+GalaxySetup smallGalaxy(int grid) {
+  GalaxySetup g = galaxy(GalaxyParams{.arms = 7, .perArm = 12});
+  for (Appearance& a : g.scene.appearances)
+    if (a.material.refractedBeam.isBeam())
+      a.material.reflectedBeam = a.material.refractedBeam =
+          BeamSettings{.distance = 12, .radius = 0.3, .grid = grid};
+  return g;
+}
+
 /// A small galaxy (7 arms of 12 stars) with the glass's beams (2 x 2 rays) and soft spot lights
 /// (radius 2, 2 shadow rays), seen from "inside" through a lens, 16 x 9 pixels (every pixel
 /// looks through the glass: about 130 rays per camera ray).
 SampledScene galaxyScene(std::unique_ptr<PixelSampler> sampler, std::string name) {
-  GalaxySetup g = galaxy(GalaxyParams{.arms = 7, .perArm = 12});
+  GalaxySetup g = smallGalaxy(2);
   for (LightSource& light : g.scene.lights)
     std::get<SpotLight>(light).setRadius(2).setShadowSamples(2);
-  for (Appearance& a : g.scene.appearances)
-    if (a.material.refractedBeam.isBeam())
-      a.material.reflectedBeam = a.material.refractedBeam =
-          BeamSettings{.distance = 12, .radius = 0.3, .grid = 2};
   CameraSpec view = g.views[2].camera;
   view.nX = 16;
   view.nY = 9;
   view.aperture = 0.25;
   view.focalDistance = 30;
   return sampledScene<BeamTracer>(std::move(name), std::move(g.scene), view, std::move(sampler));
+}
+
+/// The same small galaxy with its own point-like spot lights and the glass's beams of 4 x 4 cells
+/// (12 rays): the beam tracer traces each beam's rays together (BeamTracerSettings::together),
+/// through the wide BVH as packets of 8 and 4 rays; 16 x 9 pixels, one centred ray each.
+SampledScene galaxyTogetherScene() {
+  GalaxySetup g = smallGalaxy(4);
+  CameraSpec view = g.views[2].camera;
+  view.nX = 16;
+  view.nY = 9;
+  SampledScene s =
+      sampledScene<BeamTracer>("galaxy, beams traced together, point spots", std::move(g.scene),
+                               view, std::make_unique<CenterSampler>());
+  EXPECT_TRUE(static_cast<const BeamTracer&>(*s.widened).beamSettings().together);
+  return s;
 }
 
 /// The report authors' all-features scene from above, its point light and spot light given a
@@ -187,6 +209,7 @@ TEST(TilePoolTests, sameBitsForAnyThreadsAndTiles) {
                                "galaxy, beams, soft spots, jittered 2x2 x 2 lens samples"));
   scenes.push_back(galaxyScene(std::make_unique<AdaptiveSampler>(8, 2, 5),
                                "galaxy, beams, soft spots, adaptive, lens"));
+  scenes.push_back(galaxyTogetherScene());
   scenes.push_back(softShadowScene());
   scenes.push_back(mirrorScene());
   scenes.push_back(teapotScene());

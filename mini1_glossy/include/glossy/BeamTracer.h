@@ -4,6 +4,7 @@
 /// cast beams of secondary rays, and whose lights with a size cast soft shadows.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "glossy/RayBeam.h"
@@ -21,6 +22,10 @@ enum class BeamDepth {
 /// The beam tracer's own settings.
 struct BeamTracerSettings {
   BeamDepth beamDepth = BeamDepth::FirstBounce;
+  /// Trace a beam's rays together (Intersectable::closestHits: the wide BVH's packets) where
+  /// that gives the image of tracing them one by one; false: always one by one. The same bytes
+  /// either way (secondaryColor below says why); only the speed and the query counts differ.
+  bool together = true;
 };
 
 /// WhittedTracer plus ray beams and soft shadows (tracer `beams`).
@@ -39,6 +44,23 @@ struct BeamTracerSettings {
 ///
 /// Every random number comes from the sample context: the image is a pure function of the scene,
 /// the settings and the seed.
+///
+/// A beam's rays traced together. One by one, each ray's jitter is drawn, the ray traced and
+/// shaded, then the next ray's jitter drawn: the shading of a ray could draw numbers (a beam
+/// deeper down, a soft shadow) between two jitters. Together, every jitter is drawn first, the
+/// rays' closest hits found at once, then each ray shaded in order. That is the same arithmetic
+/// exactly when no shading draws a number, and the tracer checks it rather than assumes it:
+///
+///     start = the stream, before = the counts
+///     draw every jitter (the beam's rays)  →  drawn = the stream
+///     closestHits(rays)                       (a closest hit depends on its ray alone)
+///     for each ray, in order: shade it; the stream is no longer drawn?  →  stream = start,
+///                             counts = before, and the beam one by one after all
+///
+/// Each ray is then shaded with the same hit and the same (untouched) numbers as one by one, and
+/// the colours are summed in the same order: the same bits. The tracer tries it only where no
+/// shading is expected to draw (beams at the first bounce only, no light with a size) and for
+/// beams of at most TOGETHER_GRID² cells (their rays and hits live on the stack).
 class BeamTracer : public WhittedTracer {
  public:
   /// @param scene must outlive the tracer.
@@ -59,7 +81,17 @@ class BeamTracer : public WhittedTracer {
   Double3 transmittance(const HitContext& h, std::uint32_t light, const LightSample& sample,
                         const Double3& k, SampleContext& ctx) const override;
 
+ public:
+  /// The largest grid whose beams are traced together (TOGETHER_GRID² = 144 rays at most).
+  static constexpr int TOGETHER_GRID = 12;
+
  private:
+  /// The beam's colour with its rays traced together, or nullopt when a shading drew numbers
+  /// (then ctx is as it was on entry) or together_ is false or the grid is too large.
+  std::optional<Color> beamTogether(const HitContext& from, const Ray& secondary,
+                                    const BeamSettings& beam, int level, const Double3& kkx,
+                                    SampleContext& ctx) const;
+
   /// A light's disk, computed once per light: radius 0 or one sample is a point.
   struct LightDisk {
     Point centre = Point::ZERO;
@@ -70,6 +102,8 @@ class BeamTracer : public WhittedTracer {
 
   BeamTracerSettings beams_;
   std::vector<LightDisk> disks_;  ///< per light
+  /// beams_.together, beams at the first bounce only, and no light with a size (computed once).
+  bool together_ = false;
 };
 
 }  // namespace rt
