@@ -26,8 +26,10 @@ std::span<const std::uint32_t> Bvh::leafShapes(const BvhNode& leaf) const noexce
 
 std::size_t Bvh::memoryBytes() const noexcept {
   return nodes_.capacity() * sizeof(BvhNode) + spheres_.capacity() * sizeof(CompactSphere) +
-         (sphereShapes_.capacity() + otherShapes_.capacity() + unbounded_.capacity()) *
-             sizeof(std::uint32_t);
+         (sphereShapes_.capacity() + otherShapes_.capacity() + unbounded_.capacity() +
+          otherFlat_.capacity()) *
+             sizeof(std::uint32_t) +
+         flats_.memoryBytes();
 }
 
 template <typename Limit, typename Leaf>

@@ -589,6 +589,22 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   // The records are done with before the compact spheres are made: the two never coexist.
   std::vector<BuildRecord>().swap(records);
   nodes_.shrink_to_fit();
+  makeFlatShapes();
+}
+
+void Bvh::makeFlatShapes() {
+  const std::span<const Geometry> shapes = primitives_.shapes();
+  std::vector<std::uint32_t> flat;
+  for (const std::uint32_t i : otherShapes_)
+    if (primitives_.isShape(i) && FlatShapes::isFlat(shapes[i])) flat.push_back(i);
+  if (flat.empty()) return;  // no table: a mesh of a million triangles costs nothing here
+  otherFlat_.assign(otherShapes_.size(), NOT_FLAT);
+  std::uint32_t next = 0;
+  for (std::size_t k = 0; k < otherShapes_.size(); ++k) {
+    const std::uint32_t i = otherShapes_[k];
+    if (primitives_.isShape(i) && FlatShapes::isFlat(shapes[i])) otherFlat_[k] = next++;
+  }
+  flats_ = FlatShapes(primitives_, flat);
 }
 
 void Bvh::makeCompactSpheres(int threads) {

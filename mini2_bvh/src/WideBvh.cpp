@@ -323,12 +323,14 @@ std::optional<Hit> WideBvh::closestHit(const Ray& ray, double tMax,
       } else {
         const Leaf& leaf = leaves_[current & ~WideNode::LEAF];
         tests += leaf.count;
+        const double before = nearest.t();
         binary_.forEachPrimitive(asBinaryLeaf(leaf), ray,
                                  [&](const Roots& roots, std::uint32_t shape) {
                                    nearest.offer(roots, shape);
                                    return true;
                                  });
-        limitF = floatLimit(std::min(limit, nearest.t()));
+        // Rounded again only when the leaf found a nearer hit (most leaves do not).
+        if (nearest.t() != before) limitF = floatLimit(std::min(limit, nearest.t()));
       }
       // The next pending slot not entered beyond the best hit found since it was pushed.
       while (top > 0 && stack[top - 1].entry > limitF) --top;
@@ -572,12 +574,14 @@ void WideBvh::tracePacket(std::span<const Ray> rays, double tMax,
         for (std::uint32_t lanes = still; lanes != 0; lanes &= lanes - 1) {
           const int lane = __builtin_ctz(lanes);
           tests += leaf.count;
+          const double before = nearest[lane].t();
           binary_.forEachPrimitive(asBinaryLeaf(leaf), rays[lane],
                                    [&](const Roots& roots, std::uint32_t shape) {
                                      nearest[lane].offer(roots, shape);
                                      return true;
                                    });
-          p.limit[lane] = floatLimit(std::min(limit, nearest[lane].t()));
+          if (nearest[lane].t() != before)
+            p.limit[lane] = floatLimit(std::min(limit, nearest[lane].t()));
         }
       }
       if (top == 0) break;

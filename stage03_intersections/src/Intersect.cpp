@@ -25,14 +25,12 @@ double magnitude(const Double3& p) noexcept {
   return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
 }
 
-/// The parameter where the ray meets the plane through q with normal n, or NaN when the ray is
-/// parallel to the plane (alignZero(n·dir) == 0), starts on it, or meets it behind its head
-/// (t < 0). Roots::add drops NaN and t <= 0.
-///
-/// "Starts on it" is decided relative to the coordinates' size: a head computed as a hit point
-/// far from the origin lies off the plane by rounding error of about ε·|coordinates|, and a
-/// glancing ray relaunched from it would otherwise find the plane again at a tiny t that the
-/// course's fixed 2^-40 threshold does not catch.
+}  // namespace
+
+// "Starts on it" (Intersect.h) is decided relative to the coordinates' size: a head computed as
+// a hit point far from the origin lies off the plane by rounding error of about ε·|coordinates|,
+// and a glancing ray relaunched from it would otherwise find the plane again at a tiny t that the
+// course's fixed 2^-40 threshold does not catch.
 double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
   // BEGIN SOLUTION: hint: planeT, t = n.(q - P0) / n.dir; NaN when parallel or starting on it
   const double nd = alignZero(n.dot(ray.direction().xyz()));
@@ -48,9 +46,6 @@ double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept {
   // END SOLUTION
 }
 
-/// The course's inside test for a convex polygon hit by the ray: with vi = Pi - P0 and
-/// ni = vi x v(i+1), the ray passes inside iff dir·ni has the same sign for every edge. A zero
-/// (the course's alignZero of dir·normalize(ni)) means the ray meets an edge or a vertex: a miss.
 bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
   // BEGIN SOLUTION: hint: passesInside, the signs of dir.(vi x v(i+1)) agree; 0 is a miss
   const Double3& p0 = ray.head().xyz();
@@ -73,6 +68,8 @@ bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept {
   return true;
   // END SOLUTION
 }
+
+namespace {
 
 /// The two roots of a·t² + b·t + c = 0 in the cancellation-free form, or none when the
 /// discriminant is not positive (a tangent ray does not intersect, as for the course's sphere).

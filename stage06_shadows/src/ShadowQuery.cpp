@@ -4,22 +4,11 @@
 
 namespace rt {
 
-namespace {
-
-/// A crossing of the shadow ray, ordered by (geometry, t): the canonical order of the product.
-struct Crossing {
-  std::uint32_t geometry;
-  double t;
-};
-
-bool before(const Crossing& a, const Crossing& b) noexcept {
-  return a.geometry < b.geometry || (a.geometry == b.geometry && a.t < b.t);
-}
-
-}  // namespace
-
 ShadowQuery::ShadowQuery(const Intersectable& shapes, const LitScene& scene, double cutOff)
-    : shapes_(shapes), scene_(scene), cutOff_(cutOff) {
+    : shapes_(shapes),
+      occluders_(dynamic_cast<const LightOccluders*>(&shapes)),
+      scene_(scene),
+      cutOff_(cutOff) {
   for (const Appearance& a : scene.appearances) {
     const Double3& k = a.material.kT;
     if (k.x > 1 || k.y > 1 || k.z > 1) productOnlyFalls_ = false;
@@ -27,51 +16,21 @@ ShadowQuery::ShadowQuery(const Intersectable& shapes, const LitScene& scene, dou
 }
 
 Transmittance ShadowQuery::operator()(const Ray& ray, double tMin, double tMax,
-                                      const Double3& weight, QueryCounts* counts) const noexcept {
+                                      const Double3& weight, QueryCounts* counts,
+                                      std::uint32_t light) const noexcept {
   // BEGIN SOLUTION: hint: ShadowQuery, the blockers' kT product in [tMin, tMax], canonical order
   Transmittance result;
   if (!(tMax >= tMin)) return result;  // an empty range (light closer than 2ε): nothing between
-
-  Crossing kept[CAPACITY];
-  int keptCount = 0;
-  bool overflow = false;
-  Double3 partial = Double3::ONE;  // in the walk's order: only to decide an early stop
-  const double stopBelow = cutOff_ * (1 - MARGIN);
-  shapes_.forEachHit(
-      ray, tMax,
-      [&](const Hit& hit) {
-        if (hit.t < tMin) return true;  // within ε of the origin: the surface itself
-        ++result.crossings;
-        const Double3& k = kT(hit.geometry);
-        bool cut = k.isExactlyZero();  // an opaque blocker: 0 in any order
-        if (!cut && productOnlyFalls_) {
-          partial = partial * k;
-          cut = partial.lowerThan(stopBelow) || (partial * weight).lowerThan(stopBelow);
-        }
-        if (cut) {
-          result.stoppedEarly = true;
-          return false;
-        }
-        if (keptCount < CAPACITY)
-          kept[keptCount++] = {hit.geometry, hit.t};
-        else
-          overflow = true;
-        return true;
-      },
-      counts);
-  if (result.stoppedEarly) {
+  ShadowCrossings crossings(scene_, cutOff_, productOnlyFalls_, tMin, weight);
+  walk(light, ray, tMin, tMax, crossings, counts);
+  result.crossings = crossings.count();
+  if (crossings.stoppedEarly()) {
+    result.stoppedEarly = true;
     result.factor = Double3::ZERO;
     return result;
   }
-
-  if (overflow) {
-    result.factor = canonicalProduct(ray, tMin, tMax, counts);
-  } else {
-    // Insertion sort: a handful of crossings at most.
-    for (int i = 1; i < keptCount; ++i)
-      for (int j = i; j > 0 && before(kept[j], kept[j - 1]); --j) std::swap(kept[j], kept[j - 1]);
-    for (int i = 0; i < keptCount; ++i) result.factor = result.factor * kT(kept[i].geometry);
-  }
+  result.factor =
+      crossings.overflow() ? canonicalProduct(ray, tMin, tMax, counts) : crossings.product();
   if (result.factor.lowerThan(cutOff_) || (result.factor * weight).lowerThan(cutOff_))
     result.factor = Double3::ZERO;
   return result;
@@ -86,6 +45,8 @@ Double3 ShadowQuery::canonicalProduct(const Ray& ray, double tMin, double tMax,
   // none.
   Double3 factor = Double3::ONE;
   bool started = false;
+  using Crossing = ShadowCrossings::Crossing;
+  constexpr auto before = ShadowCrossings::before;
   Crossing last{};
   for (;;) {
     bool found = false;

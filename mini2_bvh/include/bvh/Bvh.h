@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "bvh/BvhNode.h"
+#include "bvh/FlatShapes.h"
 #include "geometries/Geometry.h"
 #include "intersections/Geometries.h"
 #include "intersections/Intersect.h"
@@ -117,6 +118,8 @@ class Bvh final : public Intersectable {
   void makeCompactSpheres(int threads);
   /// The threads a build uses for BvhBuildOptions::threads (0: one per core).
   static int buildThreads(int threads) noexcept;
+  /// The flat shapes' records (flats_) and where the leaves find them (otherFlat_).
+  void makeFlatShapes();
 
   /// Walks the nodes whose box the ray meets before limit() (asked again at every node, so a
   /// closest-hit query can shrink it), near child first, calling leaf(node) at each leaf reached;
@@ -134,6 +137,11 @@ class Bvh final : public Intersectable {
   std::vector<std::uint32_t> sphereShapes_;  ///< their numbers among the primitives
   std::vector<std::uint32_t> otherShapes_;   ///< the other leaves' primitives (mesh triangles too)
   std::vector<std::uint32_t> unbounded_;     ///< planes and tubes (and the like): their numbers
+  /// The triangles' and polygons' records among the other leaves' primitives: otherFlat_[k] is
+  /// otherShapes_[k]'s record in flats_, or NOT_FLAT; empty when there is none.
+  std::vector<std::uint32_t> otherFlat_;
+  FlatShapes flats_;
+  static constexpr std::uint32_t NOT_FLAT = 0xFFFF'FFFFu;
   int depth_ = 0;
 };
 
@@ -148,7 +156,9 @@ inline bool Bvh::forEachPrimitive(const BvhNode& leaf, const Ray& ray, const F& 
   } else {
     for (std::uint32_t k = leaf.offset; k < end; ++k) {
       const std::uint32_t shape = otherShapes_[k];
-      if (!f(primitives_.roots(shape, ray), shape)) return false;
+      const std::uint32_t flat = otherFlat_.empty() ? NOT_FLAT : otherFlat_[k];
+      if (!f(flat != NOT_FLAT ? flats_.roots(flat, ray) : primitives_.roots(shape, ray), shape))
+        return false;
     }
   }
   return true;

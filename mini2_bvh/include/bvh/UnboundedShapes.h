@@ -1,13 +1,14 @@
 #pragma once
 /// @file UnboundedShapes.h
 /// What every acceleration structure does first: the primitives it cannot bound (planes, tubes,
-/// shapes or mesh triangles beyond the float range) stay outside it, and a query tests them one by one before it walks the
-/// boxes, the tree or the cells. CBR, the BVH and the grid share these steps, so that the three
-/// answer the unbounded shapes exactly alike, and count them alike.
+/// shapes or mesh triangles beyond the float range) stay outside it, and a query tests them one by
+/// one before it walks the boxes, the tree or the cells. CBR, the BVH and the grid share these
+/// steps, so that the three answer the unbounded shapes exactly alike, and count them alike.
 
 #include <cstdint>
 #include <span>
 
+#include "bvh/FlatShapes.h"
 #include "geometries/Geometry.h"
 #include "intersections/HitRules.h"
 #include "intersections/Intersect.h"
@@ -22,16 +23,24 @@ namespace rt {
 inline std::uint64_t offerUnbounded(std::span<const std::uint32_t> unbounded,
                                     const Primitives& primitives, const Ray& ray,
                                     NearestHit& nearest) noexcept {
-  for (const std::uint32_t i : unbounded) nearest.offer(primitives.roots(i, ray), i);
+  for (const std::uint32_t i : unbounded) {
+    // A ray running away from a plane it starts beside has no root (FlatShapes::awayFromPlane):
+    // no call for the floor under every ray that goes up.
+    if (const Plane* plane =
+            primitives.isShape(i) ? std::get_if<Plane>(&primitives.shapes()[i]) : nullptr;
+        plane != nullptr &&
+        FlatShapes::awayFromPlane(plane->point().xyz(), plane->normal().xyz(), ray))
+      continue;
+    nearest.offer(primitives.roots(i, ray), i);
+  }
   return unbounded.size();
 }
 
 /// The every-hit query's first step: visits each unbounded shape's hits within tMax until visit
 /// says stop, adding the exact tests made to tests.
 /// @returns false when visit stopped the query.
-inline bool visitUnbounded(std::span<const std::uint32_t> unbounded,
-                           const Primitives& primitives, const Ray& ray, double tMax,
-                           HitVisitor visit, std::uint64_t& tests) {
+inline bool visitUnbounded(std::span<const std::uint32_t> unbounded, const Primitives& primitives,
+                           const Ray& ray, double tMax, HitVisitor visit, std::uint64_t& tests) {
   bool complete = true;
   for (std::size_t k = 0; complete && k < unbounded.size(); ++k) {
     ++tests;

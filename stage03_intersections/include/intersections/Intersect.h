@@ -11,6 +11,7 @@
 
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <cstddef>
@@ -45,6 +46,18 @@ class Roots {
 inline bool withinDistance(double t, double tMax) noexcept {
   return t <= tMax || alignZero(t - tMax) <= 0;
 }
+
+/// The parameter where the ray meets the plane through q with unit normal n, or NaN when the
+/// ray is parallel to the plane (alignZero(n·dir) == 0), starts on it (n·(q − head) within
+/// 8 ulps of the coordinates' size), or meets it behind its head (t < 0). Roots::add drops NaN
+/// and t <= 0. What the plane's, the triangle's and the polygon's solvers share.
+double planeT(const Double3& q, const Double3& n, const Ray& ray) noexcept;
+
+/// The course's inside test for a convex polygon hit by the ray: with vi = Pi − P0 and
+/// ni = vi × v(i+1), the ray passes inside iff dir·ni has the same sign for every edge. A zero
+/// (the course's alignZero of dir·normalize(ni)) means the ray meets an edge or a vertex: a
+/// miss. The triangle's and the polygon's solvers are planeT and this.
+bool passesInside(std::span<const Point> vertices, const Ray& ray) noexcept;
 
 /// The sphere's solver on its bare data, the centre's coordinates and the radius. It is what
 /// intersectRoots(Sphere) runs; a structure that keeps spheres in a compact array of its own

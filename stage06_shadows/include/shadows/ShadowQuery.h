@@ -31,6 +31,8 @@
 #include "lighting/LitScene.h"
 #include "primitives/Double3.h"
 #include "primitives/Ray.h"
+#include "shadows/LightOccluders.h"
+#include "shadows/ShadowCrossings.h"
 
 namespace rt {
 
@@ -49,10 +51,9 @@ struct Transmittance {
 class ShadowQuery {
  public:
   /// Crossings kept on the stack for the canonical order.
-  static constexpr int CAPACITY = 16;
-  /// A partial product stops the walk when below cutOff·(1 − MARGIN): far above the relative
-  /// rounding difference between two orders of the same factors (~n·2^-53 for n factors).
-  static constexpr double MARGIN = 1e-9;
+  static constexpr int CAPACITY = ShadowCrossings::CAPACITY;
+  /// A partial product stops the walk when below cutOff·(1 − MARGIN) (ShadowCrossings.h).
+  static constexpr double MARGIN = ShadowCrossings::MARGIN;
 
   /// @param shapes what to intersect (scene.geometries or an accelerator over the same shapes);
   ///        it and scene must outlive the query.
@@ -60,14 +61,30 @@ class ShadowQuery {
   ///        path weight, is lowerThan(cutOff) (the course's meaning: all three channels below).
   ShadowQuery(const Intersectable& shapes, const LitScene& scene, double cutOff);
 
+  /// For a shadow ray aimed at no light of the scene's list (a point of a light's disk).
+  static constexpr std::uint32_t NO_LIGHT = 0xFFFF'FFFFu;
+
   /// The transmittance along shadowRay for hits with t in [tMin, tMax] (an empty range when
   /// tMax < tMin: nothing in between). weight is the path weight of the point being shaded
-  /// ((1,1,1) for a primary hit). The walk's cost is added to counts when given. Allocates
-  /// nothing; never throws.
+  /// ((1,1,1) for a primary hit). The walk's cost is added to counts when given. light: the
+  /// index of the light the ray is aimed at (in LitScene::lights), or NO_LIGHT; it changes only
+  /// how the hits are found (walk), never the answer. Allocates nothing; never throws.
   Transmittance operator()(const Ray& shadowRay, double tMin, double tMax, const Double3& weight,
-                           QueryCounts* counts = nullptr) const noexcept;
+                           QueryCounts* counts = nullptr,
+                           std::uint32_t light = NO_LIGHT) const noexcept;
 
  private:
+  /// Hands crossings the hits of ray with t in [tMin, tMax] (and maybe some before tMin), until
+  /// it says stop: through the shapes' LightOccluders when they are one and the ray is aimed at
+  /// a light (the same shapes crossed, found faster: mini2_bvh's light buffers), else with
+  /// shapes.forEachHit. False when crossings stopped the walk.
+  bool walk(std::uint32_t light, const Ray& ray, double tMin, double tMax,
+            ShadowCrossings& crossings, QueryCounts* counts) const {
+    if (occluders_ != nullptr && light != NO_LIGHT)
+      return occluders_->crossingsTowards(light, ray, tMin, tMax, crossings, counts);
+    return shapes_.forEachHit(
+        ray, tMax, [&crossings](const Hit& hit) { return crossings.add(hit); }, counts);
+  }
   const Double3& kT(std::uint32_t geometry) const noexcept {
     return scene_.appearanceOf(geometry).material.kT;
   }
@@ -76,6 +93,8 @@ class ShadowQuery {
                            QueryCounts* counts) const noexcept;
 
   const Intersectable& shapes_;
+  /// shapes_ as a LightOccluders, when it is one (found once, by the constructor); else null.
+  const LightOccluders* occluders_;
   const LitScene& scene_;
   double cutOff_;
   /// True when every kT of the scene is at most 1 in every channel (computed once).
