@@ -8,6 +8,7 @@
 #include "bvh/Cbr.h"
 #include "bvh/WideBvh.h"
 #include "grid/Grid.h"
+#include "lightbuffer/LightBuffers.h"
 
 namespace rt {
 
@@ -27,6 +28,17 @@ std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geo
     known += (known.empty() ? "" : ", ") + std::string(n);
   throw std::invalid_argument("makeAcceleration: unknown acceleration '" + std::string(name) +
                               "' (known: " + known + ")");
+}
+
+std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes,
+                                                std::span<const LightSource> lights,
+                                                bool lightBuffers) {
+  std::unique_ptr<Intersectable> structure = makeAcceleration(name, shapes);
+  if (!lightBuffers || lights.empty()) return structure;
+  if (!structure)
+    return std::make_unique<LightBuffers>(static_cast<const Intersectable&>(shapes),
+                                          shapes.primitives(), lights);
+  return std::make_unique<LightBuffers>(std::move(structure), shapes.primitives(), lights);
 }
 
 }  // namespace rt

@@ -63,6 +63,7 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments) {
   if (arguments.seed) doc.render.seed = static_cast<std::uint64_t>(*arguments.seed);
   if (arguments.settings.threads) doc.render.threads = *arguments.settings.threads;
   if (arguments.settings.accel) doc.render.accel = *arguments.settings.accel;
+  if (arguments.settings.lightBuffers) doc.render.lightBuffers = *arguments.settings.lightBuffers;
   findTracer(doc.render.tracer, arguments.tracer ? "--tracer" : "render.tracer");
   return doc;
 }

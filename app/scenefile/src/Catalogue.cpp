@@ -111,6 +111,7 @@ constexpr CatalogueKey KEYS[] = {
     {"render", "adaptiveDepth", M1, D, "2"},
     {"render", "beamDepth", M1, D, "\"first\""},
     {"render", "accel", M2, D, "\"bvh4\""},
+    {"render", "lightBuffers", M2, D, "true"},
     {"render", "threads", M2, D, "0"},
 };
 

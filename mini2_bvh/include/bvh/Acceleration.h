@@ -6,10 +6,12 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string_view>
 
 #include "intersections/Geometries.h"
 #include "intersections/Intersectable.h"
+#include "lighting/LightSource.h"
 
 namespace rt {
 
@@ -30,5 +32,14 @@ bool isAccelerationName(std::string_view name) noexcept;
 /// the caller intersects shapes itself.
 /// @throws std::invalid_argument naming an unknown name and the known ones.
 std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes);
+
+/// What a render intersects: the structure name asks for and, when lightBuffers, a light buffer
+/// for each point light of `lights` (lightbuffer/LightBuffers.h) around it, which its shadow rays
+/// then take; the image is the same either way, bit for bit. Null only for "none" without light
+/// buffers (the caller intersects shapes itself). shapes must outlive the result.
+/// @throws std::invalid_argument naming an unknown name and the known ones.
+std::unique_ptr<Intersectable> makeAcceleration(std::string_view name, const Geometries& shapes,
+                                                std::span<const LightSource> lights,
+                                                bool lightBuffers);
 
 }  // namespace rt

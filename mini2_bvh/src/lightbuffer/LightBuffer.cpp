@@ -301,7 +301,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
   int n = options.resolution;
   if (n == 0) {
     n = 16;
-    while (n < 128 && static_cast<double>(n) * n < 4.0 * static_cast<double>(bounded)) n *= 2;
+    while (n < 128 && static_cast<double>(n) * n < 2.0 * static_cast<double>(bounded)) n *= 2;
   }
   const double halfSide = 1 + FACE_MARGIN;
   // Calls f(cell, distance, sub) for every cell of primitive p at `cells` a side.

@@ -95,6 +95,7 @@ struct RenderJob {
 struct SettingOverrides {
   std::optional<int> threads;        ///< --threads (mini project 2)
   std::optional<std::string> accel;  ///< --accel (mini project 2)
+  std::optional<bool> lightBuffers;  ///< --light-buffers (mini project 2)
 };
 
 struct RenderOutcome {

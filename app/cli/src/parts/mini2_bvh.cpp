@@ -75,7 +75,12 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
          return teapotDocument(bubblesScene(teapotOptions(p), bubbles), p);
        }});
   registry.makeAccelerator.supply("mini2_bvh", [](const SceneDocument& doc) {
-    return makeAcceleration(doc.render.accel, doc.scene->geometries);
+    // A scene of stage 4 has no lights: nothing for light buffers to do.
+    const auto* lit = dynamic_cast<const LitScene*>(doc.scene.get());
+    return makeAcceleration(doc.render.accel, doc.scene->geometries,
+                            lit ? std::span<const LightSource>(lit->lights)
+                                : std::span<const LightSource>(),
+                            doc.render.lightBuffers);
   });
   registry.render.supply("mini2_bvh", [](const RenderJob& job) {
     RenderOptions options;
@@ -99,6 +104,17 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
         ->check([](const std::string& name) -> std::string {
           if (isAccelerationName(name)) return "";
           return unknownNameMessage("acceleration", name, ACCELERATION_NAMES);
+        });
+    command
+        .add_option_function<std::string>(
+            "--light-buffers",
+            [&into](const std::string& value) { into.lightBuffers = value == "on"; },
+            "on or off: a light buffer per point light for the shadow rays (default: the scene's "
+            "render.lightBuffers, on); the image is the same, bit for bit")
+        ->type_name("on|off")
+        ->check([](const std::string& value) -> std::string {
+          if (value == "on" || value == "off") return "";
+          return "expected on or off, got '" + value + "'";
         });
   });
 }

@@ -37,6 +37,7 @@ struct RenderSettings {
   int adaptiveDepth = 2;            ///< mini 1: the adaptive sampler's depth limit
   std::string beamDepth = "first";  ///< mini 1: beams at the "first" bounce or at "every" one
   std::string accel = "bvh4";       ///< mini 2: "none", "cbr", "bvh", "bvh4" or "grid"
+  bool lightBuffers = true;         ///< mini 2: a light buffer per point light for shadow rays
   int threads = 0;                  ///< mini 2: render threads; 0: every core
 
   bool operator==(const RenderSettings&) const = default;

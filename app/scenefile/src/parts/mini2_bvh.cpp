@@ -362,6 +362,8 @@ void registerFormat_mini2_bvh(SceneFormat& format) {
   format.attach<R>("render", "accel", [](const Node& n, R& r) {
     r.accel = readChoice(n, "an acceleration", ACCELERATION_NAMES);
   });
+  format.attach<R>("render", "lightBuffers",
+                   [](const Node& n, R& r) { r.lightBuffers = readBoolean(n); });
   format.attach<R>("render", "threads", [](const Node& n, R& r) {
     r.threads = readInteger(n, 0, RenderOptions::MAX_THREADS);
   });
@@ -369,6 +371,7 @@ void registerFormat_mini2_bvh(SceneFormat& format) {
     const RenderSettings d;
     Json& render = j["render"];
     if (doc.render.accel != d.accel) render["accel"] = doc.render.accel;
+    if (doc.render.lightBuffers != d.lightBuffers) render["lightBuffers"] = doc.render.lightBuffers;
     if (doc.render.threads != d.threads) render["threads"] = doc.render.threads;
   });
   attachMesh(format);

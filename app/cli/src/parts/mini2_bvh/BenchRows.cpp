@@ -1,6 +1,7 @@
 // rt bench's timing table: one scene rendered with the reference report's rows (no acceleration
 // on one thread; threads; threads + CBR; threads + CBR + BVH) beside the report's own times and
 // the course's other structure, the regular grid, beside them (threads + grid, no report time),
+// the wide BVH alone and with a light buffer per point light for the shadow rays (the default),
 // Intel's Embree 3 after them (a measuring stick, where the build has Embree), then by every
 // stage's tracer through the BVH on every thread; rows taken in turn, the medians
 // kept. The course's teapots have their lecturer's rows instead, his thread counts and times.
@@ -22,6 +23,7 @@
 #include "camera/Camera.h"
 #include "cli/Registry.h"
 #include "cli/Tracers.h"
+#include "lighting/LitScene.h"
 #include "parallel/TilePool.h"
 #if RT_HAVE_EMBREE
 #include "embree/EmbreeScene.h"
@@ -38,6 +40,9 @@ constexpr int DEFAULT_WIDTH = 128;
 
 /// A row's threads: every core (--threads, default one per core), or a fixed count.
 constexpr int EVERY_CORE = 0;
+
+/// A row's accel with light buffers for its shadow rays (render.lightBuffers): the name and this.
+constexpr std::string_view WITH_LIGHT_BUFFERS = "+lights";
 
 /// Intel's Embree 3 (mini2_bvh/include/embree/EmbreeScene.h): a row after the project's
 /// structures, a measuring stick; in a build without Embree, the row says how to get it.
@@ -62,6 +67,7 @@ constexpr ReferenceRow REPORT_ROWS[] = {
     {"threads + CBR", "cbr", EVERY_CORE, 837},        // 13 min 57 s
     {"threads + CBR + BVH", "bvh", EVERY_CORE, 407},  // 6 min 47 s
     {"threads + wide BVH", "bvh4", EVERY_CORE, std::nullopt},
+    {"threads + wide BVH + light buffers", "bvh4+lights", EVERY_CORE, std::nullopt},
     {"threads + grid", "grid", EVERY_CORE, std::nullopt},
     {EMBREE_ROW, EMBREE_ACCEL, EVERY_CORE, std::nullopt},
 };
@@ -80,6 +86,7 @@ constexpr ReferenceRow LECTURER_ROWS[] = {
     {"threads + CBR", "cbr", EVERY_CORE, std::nullopt},
     {"threads + CBR + BVH", "bvh", EVERY_CORE, std::nullopt},
     {"threads + wide BVH", "bvh4", EVERY_CORE, std::nullopt},
+    {"threads + wide BVH + light buffers", "bvh4+lights", EVERY_CORE, std::nullopt},
     {"threads + grid", "grid", EVERY_CORE, std::nullopt},
     {EMBREE_ROW, EMBREE_ACCEL, EVERY_CORE, std::nullopt},
 };
@@ -165,7 +172,7 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       plan.push_back(
           {BenchRow{.name = kind.stage,
                     .tracer = kind.name,
-                    .accel = std::string(DEFAULT_ACCELERATION),
+                    .accel = std::string(DEFAULT_ACCELERATION) + std::string(WITH_LIGHT_BUFFERS),
                     .threads = threads},
            &kind});
 
@@ -187,8 +194,17 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
 #endif
       continue;
     }
-    if (!accelerations.contains(row.accel))
-      accelerations[row.accel] = makeAcceleration(row.accel, doc.scene->geometries);
+    if (!accelerations.contains(row.accel)) {
+      const bool buffered = row.accel.ends_with(WITH_LIGHT_BUFFERS);
+      const std::string_view name = std::string_view(row.accel).substr(
+          0, row.accel.size() - (buffered ? WITH_LIGHT_BUFFERS.size() : 0));
+      const auto* lit = dynamic_cast<const LitScene*>(doc.scene.get());
+      accelerations[row.accel] =
+          makeAcceleration(name, doc.scene->geometries,
+                           lit ? std::span<const LightSource>(lit->lights)
+                               : std::span<const LightSource>(),
+                           buffered);
+    }
   }
   std::vector<PlannedRow> rows;
   for (auto& [row, kind] : plan) {

@@ -19,7 +19,9 @@ enum class TableFormat { Markdown, Csv, Json };
 struct BenchRow {
   std::string name;    ///< "no acceleration, 1 thread", ..., or the tracer's stage
   std::string tracer;  ///< a tracer's name (--tracer)
-  std::string accel;   ///< none, cbr, bvh, bvh4, grid, or embree (the row "Embree 3")
+  /// none, cbr, bvh, bvh4, grid, or embree (the row "Embree 3"); "+lights" after the name: with
+  /// a light buffer per point light for the shadow rays (render.lightBuffers)
+  std::string accel;
   int threads = 1;     ///< threads that rendered (never more than the image's tiles)
   double seconds = 0;  ///< wall time of the render: the median of the repeats
   RayCounts counts{};  ///< the render's rays and intersection queries (the same every repeat)
