@@ -99,7 +99,8 @@ class LightBuffer {
     BACK = 4,
     CERTAIN = 8,
     INSIDE = 16,   ///< CERTAIN, and every ray of the cell crosses the shape well inside
-    OUTSIDE = 32,  ///< CERTAIN, and every ray of the cell crosses its plane well outside it
+    OUTSIDE = 32,  ///< CERTAIN, and every ray of the cell crosses its plane well outside an
+                   ///< edge and well inside another
     WHOLE = 64,    ///< the entry covers the whole cell (sub is 0..255 both ways)
   };
   static constexpr int FLAG_SHIFT = 25;

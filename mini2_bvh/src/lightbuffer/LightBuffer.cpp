@@ -1,5 +1,56 @@
 // The light buffer's build: every primitive's distance from the light and its rectangle of cells
-// on each face of the cube (LightBuffer.h proves why these lists never miss a hit).
+// on each face of the cube (LightBuffer.h proves why these lists never miss a hit), and the two
+// shortcuts the query takes for flat shapes, proved here. Notation as in LightBuffer.h: c the
+// light, R0 the near radius (10^-3 of the scene's size S, the largest coordinate of the
+// primitives' trusted boxes and of c, at least 1), a ray o + t·dir aimed at c with
+// w·g >= R0, ρ <= 10^-4·R0 and tMax <= w·g + R0/2; u = 2^-53.
+//
+// **The side test.** A flat shape (or a plane) gets the test only when its plane is at least R0
+// from c. The ray's point at tMax lies within R0/2 + ρ < R0 of c (|X − c|² = (w·g − t)² + ρ²),
+// so on c's side of the plane; so does every point between o and it when o is on c's side too
+// (a half-space is convex): the exact ray does not cross the plane in (0, tMax]. The computed
+// side n·o − offset is off the exact one by a few u times |n·o| + |offset|, far below the
+// margin the query asks (10^-13 of o's and the scene's largest coordinates). Stage 3's planeT,
+// for such a ray, either finds no root or one past tMax: the exact crossing lies at least
+// R0/2 − ρ beyond the point at tMax along the normal, which no rounding of planeT (relative
+// error of a few u in its numerator beyond its own NaN margin) closes.
+//
+// **Certain crossings.** Stage 3's inside test with P0 = o computes, per edge i of length L_i,
+// s_i = dir·(a_i × a_(i+1)), a_i = v_i − o. With X = o + t·dir the exact crossing of the plane
+// and h the distance of o from the plane, s_i = det(X − o, a_i, a_(i+1))/t, six times the
+// tetrahedron (o, X, v_i, v_(i+1)) over t: s_i = ±L_i·d_i·h/t, d_i the distance of X from edge
+// i's line, its sign that of d_i (inside: positive) times one sign common to the edges. The
+// query allows a crossing to be decided without the solver (CERTAIN) only when o's coordinates
+// are at most 4S, o is at least D = 10^-3·S behind the plane (on the side away from c), and the
+// range starts before D/2 and reaches within R0/2 of c. Then t <= B = 5·√3·S (o and X in the
+// cube of side 4S and S), |a_i| <= B, and:
+//  - Rounding: the computed s_i is within 10·u·B² of the exact one (the differences a_i, the
+//    cross product, the dot product: a few roundings of terms of size B²).
+//  - Threshold: stage 3 calls s_i zero when s_i² <= T²·|a_i × a_(i+1)|², T = 2^-40; and
+//    |a_i × a_(i+1)| = L_i times the distance of o from edge i's line <= L_i·B (1.01 for its
+//    own rounding).
+// So a crossing with every d_i >= δ (δ = 10^-3·S) has every |s_i| >= L_i·δ·D/B, and when
+//     δ·D > B·(10·u·B²/L + 1.01·T·B)     (L the shortest edge)
+// every computed s_i is clear of both, with the signs of the exact ones: all alike, a hit.
+// A crossing with some d_i <= −δ and some d_j >= δ has two signs that differ: a miss. A shape
+// is CERTAIN when the inequality holds a hundredfold (shapes of at most four vertices). The
+// hit's t needs no solver: the contract (LightOccluders.h) asks for some t in [tMin, tMax], and
+// the exact crossing lies in it with room (t >= h >= D > tMin; X at least R0 from c puts t
+// at least R0/2 before tMax), so stage 3's computed root, a few u·B/|n·dir| away at a slope
+// |n·dir| >= MIN_SLOPE, lies in it too. The query computes X itself (its rounding is far below
+// δ: the 100 to spare) and measures the d_i with the records' unit edge normals
+// (edgeDistanceRange).
+//
+// **Whole cells.** A cell's rays meet a flat shape's plane inside the central projection of
+// the cell's padded (u, v) rectangle, which, when every corner direction y meets the plane in
+// front of c at a slope |n·y|/|y| >= 2·MIN_SLOPE, is the convex quadrilateral of the four
+// corners' points (a central projection maps lines to lines). The distance from an edge's line
+// is affine along the plane, so its least and largest values over the cell are at the corners:
+// when every edge's least is >= δ, every ray of the cell crosses the shape well inside
+// (INSIDE: the query reports a crossing without computing X); when one edge's largest is
+// <= −δ and another's least >= δ, every ray misses it (OUTSIDE). The padding (4·1.2·AIM) covers
+// the angle between a ray's direction and the direction of its crossing from c, as for the
+// cells themselves (LightBuffer.h, step 2).
 
 #include "lightbuffer/LightBuffer.h"
 
@@ -120,12 +171,17 @@ std::uint32_t placeCell(const FlatShape& f, const Double3& c, const CellCone& co
         highest[k] = std::max(highest[k], d);
       }
     }
-  bool inside = true;
+  // Inside: every edge's distance at least the margin. Outside: one edge's at most −margin and
+  // another's at least margin, so that the signs stage 3 computes differ (outside every edge
+  // at once, which a non-convex quadrilateral allows, is all signs alike: a hit to stage 3).
+  bool inside = true, outsideOne = false, insideOne = false;
   for (std::uint32_t k = 0; k < f.vertices; ++k) {
-    if (highest[k] <= -margin) return LightBuffer::OUTSIDE;
-    if (lowest[k] < margin) inside = false;
+    outsideOne = outsideOne || highest[k] <= -margin;
+    insideOne = insideOne || lowest[k] >= margin;
+    inside = inside && lowest[k] >= margin;
   }
-  return inside ? std::uint32_t{LightBuffer::INSIDE} : 0u;
+  if (inside) return LightBuffer::INSIDE;
+  return outsideOne && insideOne ? std::uint32_t{LightBuffer::OUTSIDE} : 0u;
 }
 
 /// The rectangle of (u, v) a box covers on face (axis a, sign s), for its points at least h in
