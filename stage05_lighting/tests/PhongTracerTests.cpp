@@ -9,9 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "TestSupport.h"
 #include "geometries/Plane.h"
@@ -289,6 +292,79 @@ TEST(PhongTracerTests, transmittanceSeam) {
   // TC13: the same transmittance 0.5 with a path weight k = 0.001: 0.0005 < 0.001, skipped
   const FixedTransmittanceTracer halfAgain(scene, Double3(0.5));
   EXPECT_TRUE(colorNear(halfAgain.localEffects(h, Double3(0.001), ts.ctx), 0, 0, 0));
+}
+
+/// A tracer that records every light it is asked the transmittance of, with the sample it was
+/// handed (the transmittance is (1,1,1)).
+class RecordingTracer : public ExposedPhong {
+ public:
+  using ExposedPhong::ExposedPhong;
+  Double3 transmittance(const HitContext&, std::uint32_t light, const LightSample& sample,
+                        const Double3&, SampleContext&) const override {
+    lights.push_back(light);
+    samples.push_back(sample);
+    return Double3::ONE;
+  }
+  mutable std::vector<std::uint32_t> lights;
+  mutable std::vector<LightSample> samples;
+};
+
+bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// localEffects works each light's sample out one light ahead (while the light before it is
+// shaded): each light must still be shaded with its own sample, the lights whose sample does not
+// exist (P is the light's position) skipped without shifting the others.
+TEST(PhongTracerTests, eachLightItsOwnSample) {
+  // The plane z = -10 seen at P = (0,0,-10); lights 0 and 3 sit at P (no sample), the others
+  // are of three kinds, all on the viewer's side.
+  LitScene scene = planeScene(diffuse(), Color(1, 2, 3));
+  scene.addLight(PointLight(Color(500, 500, 500), Point(0, 0, -10)));
+  scene.addLight(DirectionalLight(Color(50, 100, 150), Vector(0, -3, -4)));
+  scene.addLight(SpotLight(Color(100, 200, 300), Point(0, 3, -6), Vector(0, 0.1, -1))
+                     .setKl(0.1)
+                     .setNarrowBeam(3));
+  scene.addLight(PointLight(Color(500, 500, 500), Point(0, 0, -10)));
+  scene.addLight(PointLight(Color(70, 80, 90), Point(2, -1, -3)).setKq(0.01));
+  const RecordingTracer tracer(scene);
+  const auto h = tracer.makeContext(Hit{10, 0}, EYE_RAY);
+  ASSERT_EQ(h.point, Point(0, 0, -10));
+  ASSERT_FALSE(illuminate(scene.lights[0], h.point).has_value());
+  test::TestSample ts;
+  const Color c = tracer.localEffects(h, Double3::ONE, ts.ctx);
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: lights 1, 2 and 4 are asked for, in order, each with its own sample, bit for bit
+  EXPECT_EQ((std::vector<std::uint32_t>{1, 2, 4}), tracer.lights);
+  ASSERT_EQ(tracer.lights.size(), tracer.samples.size());
+  for (std::size_t i = 0; i < tracer.lights.size(); ++i) {
+    const LightSample own = *illuminate(scene.lights[tracer.lights[i]], h.point);
+    const LightSample& got = tracer.samples[i];
+    EXPECT_TRUE(sameBits(own.intensity.rgb(), got.intensity.rgb())) << tracer.lights[i];
+    EXPECT_TRUE(sameBits(own.l.xyz(), got.l.xyz())) << tracer.lights[i];
+    EXPECT_EQ(own.distance, got.distance) << tracer.lights[i];
+  }
+  // TC02: the colour, bit for bit, is the emission plus the lights' diffuse terms added one by
+  // one in the list's order, I_L·kD·|n·l| from each light's own sample (n = (0,0,1))
+  Double3 expected = Color(1, 2, 3).rgb();
+  for (const std::uint32_t light : {1u, 2u, 4u}) {
+    const LightSample own = *illuminate(scene.lights[light], h.point);
+    expected = expected + own.intensity.rgb() * Double3::ONE * (KD * std::abs(own.l.xyz().z));
+  }
+  EXPECT_TRUE(sameBits(expected, c.rgb())) << c.rgb().str() << " vs " << expected.str();
+
+  // =============== Boundary Values Tests ==================
+  // TC11: the last light without a sample, and a single light: nothing shifts
+  LitScene lastAtP = planeScene(diffuse());
+  lastAtP.addLight(DirectionalLight(Color(50, 100, 150), Vector(0, -3, -4)));
+  lastAtP.addLight(PointLight(Color(500, 500, 500), Point(0, 0, -10)));
+  const RecordingTracer last(lastAtP);
+  (void)last.localEffects(last.makeContext(Hit{10, 0}, EYE_RAY), Double3::ONE, ts.ctx);
+  EXPECT_EQ(std::vector<std::uint32_t>{0}, last.lights);
+  LitScene single = planeScene(diffuse());
+  single.addLight(frontLight());
+  const RecordingTracer one(single);
+  (void)one.localEffects(one.makeContext(Hit{10, 0}, EYE_RAY), Double3::ONE, ts.ctx);
+  ASSERT_EQ(std::vector<std::uint32_t>{0}, one.lights);
+  EXPECT_EQ(5.0, one.samples[0].distance);
 }
 
 TEST(PhongTracerTests, makeContext) {

@@ -3,13 +3,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <random>
+#include <utility>
 #include <vector>
 
+#include "RecordingShapes.h"
 #include "geometries/Plane.h"
+#include "geometries/Polygon.h"
 #include "geometries/Sphere.h"
 #include "geometries/Triangle.h"
 #include "intersections/Geometries.h"
@@ -68,6 +73,27 @@ class ReversedShapes final : public Intersectable {
 
  private:
   const Geometries& g_;
+};
+
+/// A fixed list of hits, reported by forEachHit in the list's order (those in (0, tMax]):
+/// duplicates and any order, as a structure that finds a shape in two places may report them.
+class ListedHits final : public Intersectable {
+ public:
+  explicit ListedHits(std::vector<Hit> hits) : hits_(std::move(hits)) {}
+  std::optional<Hit> closestHit(const Ray&, double tMax, QueryCounts*) const noexcept override {
+    std::optional<Hit> best;
+    for (const Hit& h : hits_)
+      if (h.t > 0 && h.t <= tMax && (!best || h.t < best->t)) best = h;
+    return best;
+  }
+  bool forEachHit(const Ray&, double tMax, HitVisitor visit, QueryCounts*) const override {
+    for (const Hit& h : hits_)
+      if (h.t > 0 && h.t <= tMax && !visit(h)) return false;
+    return true;
+  }
+
+ private:
+  std::vector<Hit> hits_;
 };
 
 bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -281,6 +307,221 @@ TEST(ShadowQueryTests, brighteningBlockersNeverStopEarly) {
   const Transmittance d = query(dim);
   EXPECT_EQ(Double3::ZERO, d.factor);
   EXPECT_FALSE(d.stoppedEarly);
+}
+
+/// Π kT of the hits in [tMin, tMax] in the canonical order, worked out here: the hits sorted by
+/// (shape, t), their kT multiplied left to right.
+Double3 canonicalByHand(const LitScene& s, std::vector<Hit> hits, double tMin, double tMax) {
+  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+    return a.geometry != b.geometry ? a.geometry < b.geometry : a.t < b.t;
+  });
+  Double3 product = Double3::ONE;
+  for (const Hit& h : hits)
+    if (h.t >= tMin && h.t <= tMax) product = product * s.appearanceOf(h.geometry).material.kT;
+  return product;
+}
+
+TEST(ShadowQueryTests, beyondCapacityInAnyOrder) {
+  // 20 shapes of slightly different kT, shape i crossed at t = 4(i + 1); shape 3 crossed a
+  // second time (t = 13) and shape 7's crossing reported twice (the same t), as a structure
+  // holding a shape in two places may: 22 crossings, more than CAPACITY = 16.
+  LitScene s;
+  for (int i = 0; i < 20; ++i)
+    s.add(sheet(4.0 * (i + 1)), Color::BLACK,
+          transparent(Double3(0.99 - 0.002 * i, 0.98 - 0.001 * i, 0.97 + 0.0005 * i)));
+  std::vector<Hit> hits;
+  for (std::uint32_t i = 0; i < 20; ++i) hits.push_back(Hit{4.0 * (i + 1), i});
+  hits.push_back(Hit{13, 3});
+  hits.push_back(Hit{32, 7});
+  const Double3 expected = canonicalByHand(s, hits, 0, 100);
+  std::mt19937 shuffler(2026);
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: eight orders of the 22 crossings: the repeated search gives the canonical product,
+  // the duplicate counted twice, every time (and the orders' own products differ from it)
+  bool someOrderDiffers = false;
+  for (int round = 0; round < 8; ++round) {
+    std::shuffle(hits.begin(), hits.end(), shuffler);
+    Double3 walkOrder = Double3::ONE;
+    for (const Hit& h : hits) walkOrder = walkOrder * s.appearanceOf(h.geometry).material.kT;
+    someOrderDiffers = someOrderDiffers || !sameBits(walkOrder, expected);
+    const ListedHits listed(hits);
+    const Transmittance t = ShadowQuery(listed, s, CUT_OFF)(up, 0, 100, Double3::ONE);
+    EXPECT_TRUE(sameBits(expected, t.factor)) << round;
+    EXPECT_EQ(22, t.crossings) << round;
+    EXPECT_FALSE(t.stoppedEarly) << round;
+  }
+  EXPECT_TRUE(someOrderDiffers);
+  // TC02: hits before tMin (a shape 0 hit at t = 0.5, tMin = 1) join neither walk's product
+  std::vector<Hit> withNear = hits;
+  withNear.push_back(Hit{0.5, 0});
+  const ListedHits near(withNear);
+  const Transmittance n = ShadowQuery(near, s, CUT_OFF)(up, 1, 100, Double3::ONE);
+  EXPECT_TRUE(sameBits(expected, n.factor));
+  EXPECT_EQ(22, n.crossings);
+
+  // =============== Boundary Values Tests ==================
+  // TC11: CAPACITY crossings (kept on the stack) and CAPACITY + 1 (searched anew), each with the
+  // duplicate, found far to near: both the canonical product worked out by hand
+  for (const int count : {ShadowQuery::CAPACITY, ShadowQuery::CAPACITY + 1}) {
+    std::vector<Hit> some;
+    for (std::uint32_t i = 0; static_cast<int>(some.size()) < count - 1; ++i)
+      some.push_back(Hit{4.0 * (i + 1), i});
+    some.push_back(Hit{32, 7});
+    std::reverse(some.begin(), some.end());
+    const ListedHits listed(some);
+    const Transmittance t = ShadowQuery(listed, s, CUT_OFF)(up, 0, 100, Double3::ONE);
+    EXPECT_TRUE(sameBits(canonicalByHand(s, some, 0, 100), t.factor)) << count;
+    EXPECT_EQ(count, t.crossings);
+  }
+}
+
+TEST(ShadowQueryTests, cutOffMargin) {
+  const double stopBelow = CUT_OFF * (1 - ShadowQuery::MARGIN);
+  // =============== Boundary Values Tests ==================
+  // TC11: a product within the margin, below the cut-off but not below cutOff·(1 − MARGIN): the
+  // walk is not stopped, the final product is cut (ZERO)
+  {
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(CUT_OFF * (1 - ShadowQuery::MARGIN / 2))));
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3::ZERO, t.factor);
+    EXPECT_FALSE(t.stoppedEarly);
+    EXPECT_EQ(1, t.crossings);
+  }
+  // TC12: the next double below cutOff·(1 − MARGIN): the walk stops at it
+  {
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(std::nextafter(stopBelow, 0.0))));
+    s.add(sheet(60), Color::BLACK, transparent(Double3(0.5)));
+    const Transmittance t = query(s);
+    EXPECT_EQ(Double3::ZERO, t.factor);
+    EXPECT_TRUE(t.stoppedEarly);
+    EXPECT_EQ(1, t.crossings);
+  }
+  // TC13: the cut-off itself is not below the cut-off: the light passes at 0.001
+  {
+    LitScene s;
+    s.add(sheet(50), Color::BLACK, transparent(Double3(CUT_OFF)));
+    const Transmittance t = query(s);
+    EXPECT_TRUE(sameBits(Double3(CUT_OFF), t.factor));
+    EXPECT_FALSE(t.stoppedEarly);
+  }
+}
+
+/*
+ * The scene of the LightOccluders tests, along the ray `up` (from the origin along +z):
+ *
+ *   z = 80   opaque sheet (triangle, kT 0)
+ *   z = 60   square (polygon), kT (0.45,0.7,0.9)
+ *   z = 35, 45  sphere of radius 5 at z = 40, kT (0.9,0.45,0.7), crossed twice
+ *   z = 20   sheet (triangle), kT (0.7,0.9,0.45)
+ *
+ * Towards a light at z = 70 the factor is k0·k1·k1·k2; at z = 100 the opaque sheet cuts it.
+ */
+LitScene occludersScene() {
+  LitScene s;
+  s.add(sheet(20), Color::BLACK, transparent(Double3(0.7, 0.9, 0.45)));
+  s.add(Sphere(Point(0, 0, 40), 5), Color::BLACK, transparent(Double3(0.9, 0.45, 0.7)));
+  s.add(Polygon{Point(-5, -5, 60), Point(5, -5, 60), Point(5, 5, 60), Point(-5, 5, 60)},
+        Color::BLACK, transparent(Double3(0.45, 0.7, 0.9)));
+  s.add(sheet(80), Color::BLACK, transparent(Double3(0)));
+  return s;
+}
+
+TEST(ShadowQueryTests, lightOccludersSeam) {
+  using test::CountingShapes;
+  using test::RecordingOccluders;
+  const LitScene s = occludersScene();
+  const Double3 k0(0.7, 0.9, 0.45), k1(0.9, 0.45, 0.7), k2(0.45, 0.7, 0.9);
+  const Double3 expected = k0 * k1 * k1 * k2;
+  const ShadowQuery plain(s.geometries, s, CUT_OFF);
+  const Transmittance reference = plain(up, 0, 70, Double3::ONE);
+  ASSERT_TRUE(sameBits(expected, reference.factor));
+  ASSERT_EQ(4, reference.crossings);
+  const RecordingOccluders occluders(s.geometries);
+  const ShadowQuery seam(occluders, s, CUT_OFF);
+
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a ray aimed at light 0 goes through crossingsTowards with light 0, never forEachHit;
+  // the same bits as the linear scan, and the walk's cost reaches the counts it is given
+  QueryCounts counts;
+  const Transmittance t0 = seam(up, 0, 70, Double3::ONE, &counts, 0);
+  EXPECT_TRUE(sameBits(reference.factor, t0.factor));
+  EXPECT_EQ(4, t0.crossings);
+  EXPECT_EQ(std::vector<std::uint32_t>{0}, occluders.lights);
+  EXPECT_EQ(0, occluders.forEachHitCalls);
+  EXPECT_EQ(4u, counts.shapeTests);
+  // TC02: a ray aimed at light 1: light 1 is asked for
+  const Transmittance t1 = seam(up, 0, 70, Double3::ONE, nullptr, 1);
+  EXPECT_TRUE(sameBits(reference.factor, t1.factor));
+  EXPECT_EQ((std::vector<std::uint32_t>{0, 1}), occluders.lights);
+  EXPECT_EQ(0, occluders.forEachHitCalls);
+  // TC03: the opaque sheet in the range: ZERO, stopped early, through the occluders as well
+  const Transmittance cut = seam(up, 0, 100, Double3::ONE, nullptr, 1);
+  EXPECT_EQ(Double3::ZERO, cut.factor);
+  EXPECT_TRUE(cut.stoppedEarly);
+  EXPECT_EQ(Double3::ZERO, plain(up, 0, 100, Double3::ONE).factor);
+  EXPECT_EQ(3u, occluders.lights.size());
+  // TC04: a ray aimed at no light (NO_LIGHT, the default) walks the shapes with forEachHit
+  const Transmittance none = seam(up, 0, 70, Double3::ONE);
+  EXPECT_TRUE(sameBits(reference.factor, none.factor));
+  EXPECT_EQ(1, occluders.forEachHitCalls);
+  EXPECT_EQ(3u, occluders.lights.size());
+  // TC05: shapes that are no LightOccluders are walked with forEachHit, whatever the light
+  const CountingShapes counting(s.geometries);
+  const Transmittance walked =
+      ShadowQuery(counting, s, CUT_OFF)(up, 0, 70, Double3::ONE, nullptr, 1);
+  EXPECT_TRUE(sameBits(reference.factor, walked.factor));
+  EXPECT_EQ(1, counting.forEachHitCalls);
+  // TC06: the flat shapes' crossings handed over at another t of [tMin, tMax] (the contract
+  // allows it: the triangle's and the polygon's): the same factor, bit for bit, and the same
+  // answer when the opaque sheet is in the range
+  for (const test::FlatT flat :
+       {test::FlatT::AT_T_MIN, test::FlatT::AT_T_MAX, test::FlatT::MIDDLE}) {
+    const RecordingOccluders moved(s.geometries, flat);
+    const ShadowQuery q(moved, s, CUT_OFF);
+    const Transmittance t = q(up, 1e-6, 70, Double3::ONE, nullptr, 0);
+    EXPECT_TRUE(sameBits(expected, t.factor)) << static_cast<int>(flat);
+    EXPECT_EQ(4, t.crossings) << static_cast<int>(flat);
+    const Transmittance c = q(up, 1e-6, 100, Double3::ONE, nullptr, 0);
+    EXPECT_EQ(Double3::ZERO, c.factor) << static_cast<int>(flat);
+    EXPECT_TRUE(c.stoppedEarly) << static_cast<int>(flat);
+    EXPECT_EQ(0, moved.forEachHitCalls);
+  }
+  // TC07: the cut-off reached through the occluders, flat shapes moved: 8 sheets of kT 0.2 stop
+  // the walk at the fifth crossing, as the linear scan does
+  LitScene chain;
+  for (int i = 1; i <= 8; ++i) chain.add(sheet(10.0 * i), Color::BLACK, transparent(Double3(0.2)));
+  const RecordingOccluders chainOccluders(chain.geometries, test::FlatT::MIDDLE);
+  const Transmittance stopped =
+      ShadowQuery(chainOccluders, chain, CUT_OFF)(up, 0, 100, Double3::ONE, nullptr, 2);
+  EXPECT_EQ(Double3::ZERO, stopped.factor);
+  EXPECT_TRUE(stopped.stoppedEarly);
+  EXPECT_EQ(5, stopped.crossings);
+
+  // =============== Boundary Values Tests ==================
+  // TC11: an empty range (tMax < tMin): nothing is asked of the shapes at all
+  const Transmittance empty = seam(up, 1e-6, 1e-7, Double3::ONE, nullptr, 0);
+  EXPECT_EQ(Double3::ONE, empty.factor);
+  EXPECT_EQ(3u, occluders.lights.size());
+  EXPECT_EQ(1, occluders.forEachHitCalls);
+  // TC12: more crossings than CAPACITY through the occluders: one crossingsTowards, then the
+  // canonical search walks the shapes with forEachHit (20 searches and one that finds none),
+  // and the product is the canonical one
+  LitScene many;
+  for (int i = 1; i <= 20; ++i)
+    many.add(sheet(4.0 * i), Color::BLACK,
+             transparent(Double3(0.99 - 0.002 * i, 0.98 - 0.001 * i, 0.97)));
+  const RecordingOccluders manyOccluders(many.geometries);
+  const Transmittance m =
+      ShadowQuery(manyOccluders, many, CUT_OFF)(up, 0, 100, Double3::ONE, nullptr, 4);
+  Double3 manyExpected = Double3::ONE;
+  for (int i = 1; i <= 20; ++i)
+    manyExpected = manyExpected * Double3(0.99 - 0.002 * i, 0.98 - 0.001 * i, 0.97);
+  EXPECT_TRUE(sameBits(manyExpected, m.factor));
+  EXPECT_EQ(20, m.crossings);
+  EXPECT_EQ(std::vector<std::uint32_t>{4}, manyOccluders.lights);
+  EXPECT_EQ(21, manyOccluders.forEachHitCalls);
 }
 
 }  // namespace

@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
+#include "RecordingShapes.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
 #include "geometries/Triangle.h"
@@ -194,6 +198,110 @@ TEST(ShadowTracerTests, courseDeltaLeaksAtSmallScale) {
   EXPECT_EQ(Color(70, 80, 90), course.traceRay(primary));  // light leaks: fully lit
   EXPECT_EQ(Color(20, 30, 40), scaled.traceRay(primary));  // shadowed, as it should be
   EXPECT_EQ(RayOffset::course(), course.rayOffset());
+}
+
+bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const Color& a, const Color& b) { return sameBits(a.rgb(), b.rgb()); }
+
+/// The colour at (x,0,0) seen as shade() sees it, with the rays it cast counted in counts.
+Color shadeCounted(const RayTracer& tracer, double x, RayCounts& counts) {
+  const Point p(x, 0, 0);
+  const Point eye(x - 10, 0, 5);
+  SampleContext ctx(0, 0, 0, 0, counts);
+  return tracer.traceRay(Ray(eye, p - eye), ctx);
+}
+
+// The tracer aims each shadow ray at a light of the scene's list and says which: an
+// acceleration that is also a LightOccluders is asked with that light's index.
+TEST(ShadowTracerTests, lightIndexReachesTheOccluders) {
+  // The floor scene with a blocker of kT 0.5 over P = (0,0,0); light 1 under the floor (the
+  // same-side rule drops it: no shadow ray); light 2 at (100,0,100), behind a sphere of kT
+  // (0.3,0.6,0.9) centred on the shadow ray, crossed twice.
+  LitScene s = floorScene();
+  s.add(blockerAt(50), Color::BLACK, transparent(0.5));
+  Material tinted;
+  tinted.kT = Double3(0.3, 0.6, 0.9);
+  s.add(Sphere(Point(50, 0, 50), 5), Color::BLACK, tinted);
+  s.addLight(PointLight(Color(100, 100, 100), Point(0, 0, -100)));
+  s.addLight(PointLight(Color(100, 100, 100), Point(100, 0, 100)));
+  const test::RecordingOccluders occluders(s.geometries);
+  const ShadowTracer tracer(s, &occluders);
+  RayCounts counts, plainCounts;
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: lights 0 and 2 cast a shadow ray each, through crossingsTowards with their index;
+  // nothing walks forEachHit
+  const Color c = shadeCounted(tracer, 0, counts);
+  EXPECT_EQ((std::vector<std::uint32_t>{0, 2}), occluders.lights);
+  EXPECT_EQ(0, occluders.forEachHitCalls);
+  EXPECT_EQ(2u, counts.shadow);
+  // TC02: the same bits as the tracer over the scene's own shapes, and the colour by hand:
+  // (20,30,40) + 0.5·50 + kT²·100·0.5/√2 (|n·l| = 1/√2 towards light 2)
+  const Color plain = shadeCounted(ShadowTracer(s), 0, plainCounts);
+  EXPECT_TRUE(sameBits(plain, c));
+  EXPECT_EQ(plainCounts.shadow, counts.shadow);
+  const double side = 100 * 0.5 / std::sqrt(2.0);
+  EXPECT_NEAR(45 + 0.09 * side, c.r(), 1e-9);
+  EXPECT_NEAR(55 + 0.36 * side, c.g(), 1e-9);
+  EXPECT_NEAR(65 + 0.81 * side, c.b(), 1e-9);
+  // TC03: a shadow query asked directly without a light (NO_LIGHT) walks forEachHit
+  const Transmittance t =
+      tracer.shadowQuery(Point::ZERO, Vector(0, 0, 1), Vector(0, 0, 1), 100, Double3::ONE, counts);
+  EXPECT_EQ(Double3(0.5), t.factor);
+  EXPECT_EQ(1, occluders.forEachHitCalls);
+  EXPECT_EQ(2u, occluders.lights.size());
+}
+
+// A light that gives the point nothing (a spot light facing away: its sample's intensity is
+// exactly zero) casts no shadow ray; the pixel is the one without that light, bit for bit.
+TEST(ShadowTracerTests, zeroIntensityCastsNoShadowRay) {
+  // The floor scene with a blocker of kT 0.5 over P = (0,0,0): (20,30,40) + 0.5·50 = (45,55,65)
+  LitScene base = floorScene();
+  base.add(blockerAt(50), Color::BLACK, transparent(0.5));
+  RayCounts baseCounts;
+  const Color without = shadeCounted(ShadowTracer(base), 0, baseCounts);
+  ASSERT_EQ(Color(45, 55, 65), without);
+  ASSERT_EQ(1u, baseCounts.shadow);
+  // base plus one more light: no shadow ray for it, and the colour of base.
+  const auto expectNoShadowRay = [&](const LightSource& extra) {
+    LitScene s = base;
+    s.addLight(extra);
+    const Probe probe(s);
+    const Ray primary(Point(-10, 0, 5), Vector(10, 0, -5));
+    const Probe::HitContext h = probe.makeContext(*s.geometries.closestHit(primary), primary);
+    const std::optional<LightSample> sample = illuminate(s.lights[1], h.point);
+    ASSERT_TRUE(sample.has_value());
+    ASSERT_TRUE(sample->intensity.rgb().isExactlyZero());
+    RayCounts counts;
+    EXPECT_TRUE(sameBits(without, shadeCounted(ShadowTracer(s), 0, counts)));
+    EXPECT_EQ(baseCounts, counts);  // one shadow ray, the same shape tests
+    // ... and the tracer's transmittance towards it: ZERO, nothing cast, nothing tested
+    RayCounts direct;
+    SampleContext ctx(0, 0, 0, 0, direct);
+    EXPECT_TRUE(sameBits(Double3::ZERO, probe.transmittance(h, 1, *sample, Double3::ONE, ctx)));
+    EXPECT_EQ(RayCounts{}, direct);
+  };
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a bright spot light above P facing up, away from it (it passes the same-side rule)
+  expectNoShadowRay(SpotLight(Color(1000, 1000, 1000), Point(0, 0, 100), Vector(0, 0, 1)));
+  // TC02: a focused spot (narrowBeam 10) facing away
+  expectNoShadowRay(
+      SpotLight(Color(1000, 1000, 1000), Point(0, 0, 100), Vector(0.3, 0, 1)).setNarrowBeam(10));
+  // TC03: a black point light
+  expectNoShadowRay(PointLight(Color(0, 0, 0), Point(0, 0, 100)));
+  // TC04: a spot facing P, blue only (0,0,100): a shadow ray is cast, its term passes the
+  // blocker: (45,55,65) + (0,0,100·0.5·0.5) = (45,55,90)
+  {
+    LitScene s = base;
+    s.addLight(SpotLight(Color(0, 0, 100), Point(0, 0, 100), Vector(0, 0, -1)));
+    RayCounts counts;
+    EXPECT_EQ(Color(45, 55, 90), shadeCounted(ShadowTracer(s), 0, counts));
+    EXPECT_EQ(2u, counts.shadow);
+  }
+
+  // =============== Boundary Values Tests ==================
+  // TC11: a spot at a right angle to P (direction·l = 0 exactly: l has no y, the spot faces +y):
+  // zero, no shadow ray
+  expectNoShadowRay(SpotLight(Color(1000, 1000, 1000), Point(0, 0, 100), Vector(0, 1, 0)));
 }
 
 }  // namespace
