@@ -168,13 +168,17 @@ FlatShapes::FlatShapes(Primitives primitives, std::span<const std::uint32_t> sha
     for (const Point& v : vertices) centroid = centroid + v.xyz();
     centroid = centroid / static_cast<double>(vertices.size());
     f.shortestEdge = INFINITY;
+    for (std::size_t k = 0; k < vertices.size(); ++k)
+      f.shortestEdge = std::min(
+          f.shortestEdge,
+          std::sqrt(
+              (vertices[(k + 1) % vertices.size()].xyz() - vertices[k].xyz()).lengthSquared()));
     for (std::size_t k = 0; k < 4; ++k) {
       const std::size_t e = k < vertices.size() ? k : 0;
       const Double3& from = vertices[e].xyz();
       const Double3& to = vertices[(e + 1) % vertices.size()].xyz();
       const Double3 edge = to - from;
       const double length = std::sqrt(edge.lengthSquared());
-      if (k < vertices.size()) f.shortestEdge = std::min(f.shortestEdge, length);
       Double3 inward = f.n.cross(edge) / length;
       if (inward.dot(centroid - from) < 0) inward = -inward;
       f.ex[k] = inward.x, f.ey[k] = inward.y, f.ez[k] = inward.z;

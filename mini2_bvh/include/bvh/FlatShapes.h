@@ -47,11 +47,12 @@ struct alignas(32) FlatShape {
   /// The edges' lines in the shape's plane, for tests that place a point of the plane with a
   /// margin (the light buffers'): edge k (from vertex k to k + 1) has the unit normal
   /// (ex, ey, ez)[k], in the plane and pointing inwards, and a point X of the plane lies
-  /// e_k·X − ef[k] inside it. Unused lanes repeat edge 0.
+  /// e_k·X − ef[k] inside it. Unused lanes repeat edge 0; a polygon of more than four vertices
+  /// has its first four edges here only (the light buffers never place such a shape).
   std::array<double, 4> ex, ey, ez, ef;
   Double3 q;               ///< planeT's point (stage 3's: the plane's, or vertex 0)
   Double3 n;               ///< planeT's unit normal
-  double shortestEdge;     ///< the length of its shortest edge
+  double shortestEdge;     ///< the length of its shortest edge (of all its edges)
   std::uint32_t vertices;  ///< 3, 4, or more (then the shape's own list is used)
   std::uint32_t shape;     ///< its number among the shapes
 };

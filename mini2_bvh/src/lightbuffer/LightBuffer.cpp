@@ -172,8 +172,9 @@ std::uint32_t placeCell(const FlatShape& f, const Double3& c, const CellCone& co
       }
     }
   // Inside: every edge's distance at least the margin. Outside: one edge's at most −margin and
-  // another's at least margin, so that the signs stage 3 computes differ (outside every edge
-  // at once, which a non-convex quadrilateral allows, is all signs alike: a hit to stage 3).
+  // another's at least margin, so that two of the signs stage 3 computes differ. (Outside one
+  // edge, a point of a convex shape's plane is inside another, but of a sliver by less than
+  // rounding may decide: the second margin is needed.)
   bool inside = true, outsideOne = false, insideOne = false;
   for (std::uint32_t k = 0; k < f.vertices; ++k) {
     outsideOne = outsideOne || highest[k] <= -margin;
