@@ -123,7 +123,7 @@ const BadInput BAD_INPUTS[] = {
      "}\n",
      "bad.json:4:14: render.fps: unknown key; expected one of: tracer, maxLevel, minK, seed, "
      "gridLines, gridColor, samples, adaptive, adaptiveThreshold, adaptiveDepth, beamDepth, accel "
-     "and 1 more"},
+     "and 2 more"},
     // EP15: unknown key differing only in case
     {"UnknownKeyCase",
      "{\n"
