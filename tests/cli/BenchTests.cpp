@@ -33,14 +33,14 @@ using test::run;
 /// mini 2's) but stage 4's debugging views.
 const std::vector<std::string> STAGE_TRACERS{"ambient", "phong", "shadow", "whitted", "beams"};
 
-/// The rows' names in the documented order: the reference report's four, the wide BVH's and the
-/// grid's, Embree's (rendered or not, as the build has Embree), then one per stage's tracer,
-/// named by its stage.
+/// The rows' names in the documented order: the reference report's four, the wide BVH's alone
+/// and with light buffers, the grid's, Embree's (rendered or not, as the build has Embree), then
+/// one per stage's tracer, named by its stage.
 std::vector<std::string> expectedNames() {
   std::vector<std::string> names{"no acceleration",    "threads",
                                  "threads + CBR",      "threads + CBR + BVH",
-                                 "threads + wide BVH", "threads + grid",
-                                 "Embree 3"};
+                                 "threads + wide BVH", "threads + wide BVH + light buffers",
+                                 "threads + grid",     "Embree 3"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   return names;
 }
@@ -52,8 +52,9 @@ constexpr bool HAVE_EMBREE = true;
 constexpr bool HAVE_EMBREE = false;
 #endif
 
-/// The row "Embree 3" and the first stage's tracer's row, in the report's rows.
-constexpr std::size_t EMBREE = 6, FIRST_STAGE = 7;
+/// The rows of the wide BVH alone and with light buffers, the row "Embree 3" and the first
+/// stage's tracer's row, in the report's rows.
+constexpr std::size_t WIDE = 4, LIGHTS = 5, EMBREE = 7, FIRST_STAGE = 8;
 
 /// The note of the row "Embree 3" in a build without Embree.
 const std::string NOT_BUILT =
@@ -80,9 +81,9 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   const std::vector<std::string> names = expectedNames();
   ASSERT_EQ(rows.size(), names.size());
   const std::vector<std::string> keys{
-      "name",      "tracer",           "accel",           "threads",     "seconds",
-      "primary",   "secondary",        "shadow",          "raysPerSecond", "nodesPerRay",
-      "speedup",   "referenceSeconds", "pixelsDiffering", "note"};
+      "name",    "tracer",           "accel",           "threads",       "seconds",
+      "primary", "secondary",        "shadow",          "raysPerSecond", "nodesPerRay",
+      "speedup", "referenceSeconds", "pixelsDiffering", "note"};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     std::vector<std::string> got;
     for (const auto& [key, value] : rows[i].items()) got.push_back(key);
@@ -92,21 +93,23 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     EXPECT_EQ(got, sortedKeys) << i;
     EXPECT_EQ(rows[i]["name"], names[i]) << i;
   }
-  // TC03: the reference rows, the wide BVH's and the grid's render with the galaxy's tracer,
-  // beams, and the report's accelerations, then the wide BVH and the grid
-  const std::vector<std::string> accels{"none", "none", "cbr", "bvh", "bvh4", "grid"};
-  for (std::size_t i = 0; i < 6; ++i) {
+  // TC03: the reference rows, the wide BVH's (alone and with light buffers) and the grid's
+  // render with the galaxy's tracer, beams, and the report's accelerations, then the wide BVH,
+  // the wide BVH with a light buffer per point light ("+lights") and the grid
+  const std::vector<std::string> accels{"none", "none",        "cbr", "bvh",
+                                        "bvh4", "bvh4+lights", "grid"};
+  for (std::size_t i = 0; i < EMBREE; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "beams") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
   }
   // TC03b: then Embree's row, with the same tracer, its accel "embree"
   EXPECT_EQ(rows[EMBREE]["tracer"], "beams");
   EXPECT_EQ(rows[EMBREE]["accel"], "embree");
-  // TC04: then every stage's tracer, in the course's order, through the default BVH, the wide
-  // one (not the debugging views rays, normals and hits)
+  // TC04: then every stage's tracer, in the course's order, as a render goes by default: the
+  // wide BVH with light buffers (not the debugging views rays, normals and hits)
   for (std::size_t i = FIRST_STAGE; i < rows.size(); ++i) {
     EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - FIRST_STAGE]) << i;
-    EXPECT_EQ(rows[i]["accel"], "bvh4") << i;
+    EXPECT_EQ(rows[i]["accel"], "bvh4+lights") << i;
   }
   // TC05: 16 x 9 is one tile of 32: every row rendered on one thread (never more than tiles);
   // the row not rendered keeps the threads asked for
@@ -117,18 +120,24 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
     if (i != EMBREE || HAVE_EMBREE) {
       EXPECT_EQ(rows[i]["primary"], 144) << i;
     }
-  // TC07: the reference rows, the wide BVH's and the grid's trace the same rays: the images are
-  // the same bits, so are the counts
-  for (std::size_t i = 1; i < 6; ++i)
+  // TC07: the reference rows, the wide BVH's (alone and with light buffers) and the grid's
+  // trace the same rays: the images are the same bits, so are the counts
+  for (std::size_t i = 1; i < EMBREE; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_GT(rows[0]["secondary"].get<long>(), 0);
   EXPECT_GT(rows[0]["shadow"].get<long>(), 0);
-  // TC08: the beams row through the wide BVH is the fifth row again; the wide tree visits fewer
-  // nodes than the binary one (its node holds four boxes)
+  // TC08: the beams row through the wide BVH with light buffers is the sixth row again; the
+  // wide tree visits fewer nodes than the binary one (its node holds four boxes)
   for (const char* kind : {"primary", "secondary", "shadow", "nodesPerRay"})
-    EXPECT_EQ(rows.back()[kind], rows[4][kind]) << kind;
-  EXPECT_LT(rows[4]["nodesPerRay"].get<double>(), rows[3]["nodesPerRay"].get<double>());
+    EXPECT_EQ(rows.back()[kind], rows[LIGHTS][kind]) << kind;
+  EXPECT_LT(rows[WIDE]["nodesPerRay"].get<double>(), rows[3]["nodesPerRay"].get<double>());
+  // TC08b: the light buffers' row: the wide BVH's rays and image (no pixel differs from the
+  // first row's), with fewer nodes per ray (a shadow ray a buffer answers enters no node)
+  for (const char* kind : {"primary", "secondary", "shadow", "pixelsDiffering"})
+    EXPECT_EQ(rows[LIGHTS][kind], rows[WIDE][kind]) << kind;
+  EXPECT_EQ(rows[LIGHTS]["pixelsDiffering"], 0);
+  EXPECT_LT(rows[LIGHTS]["nodesPerRay"].get<double>(), rows[WIDE]["nodesPerRay"].get<double>());
   // TC09: nodes per ray: none without a hierarchy, some through the BVH (and cells through the
   // grid)
   // (none for Embree, which does not report its nodes: null)
@@ -140,7 +149,7 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
       EXPECT_GT(rows[i]["nodesPerRay"].get<double>(), 0) << i;
     }
   // TC10: the reference report's times beside its four rows (1 h 21 min, 25 min 40 s, 13 min 57 s,
-  // 6 min 47 s), null after them (the grid's row first)
+  // 6 min 47 s), null after them (the wide BVH's row first)
   const std::vector<int> reference{4860, 1540, 837, 407};
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
   for (std::size_t i = 4; i < rows.size(); ++i)
@@ -158,6 +167,10 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
   ASSERT_EQ(err.size(), names.size()) << r.err;
   EXPECT_EQ(err[0], "rt bench: row 1/" + std::to_string(names.size()) +
                         ": no acceleration (tracer beams, accel none, 1 thread)");
+  EXPECT_EQ(err[LIGHTS], "rt bench: row 6/" + std::to_string(names.size()) +
+                             ": threads + wide BVH + light buffers (tracer beams, accel "
+                             "bvh4+lights, " +
+                             std::to_string(cores()) + (cores() == 1 ? " thread)" : " threads)"));
   for (std::size_t i = 0; i < err.size(); ++i)
     EXPECT_TRUE(err[i].starts_with("rt bench: row " + std::to_string(i + 1) + "/" +
                                    std::to_string(names.size()) + ": " + names[i] + " ("))
@@ -186,8 +199,8 @@ TEST(BenchTests, jsonRowsAreTheReferenceRowsThenEveryTracerWithExactCounts) {
                           "nodesPerRay", "speedup", "pixelsDiffering", "referenceSeconds"})
     EXPECT_TRUE(rows[EMBREE][key].is_null()) << key;
   EXPECT_EQ(rows[EMBREE]["note"], NOT_BUILT);
-  EXPECT_EQ(err[EMBREE], "rt bench: row 7/" + std::to_string(names.size()) + ": Embree 3 (" +
-                             NOT_BUILT + ")");
+  EXPECT_EQ(err[EMBREE],
+            "rt bench: row 8/" + std::to_string(names.size()) + ": Embree 3 (" + NOT_BUILT + ")");
 #endif
 }
 
@@ -203,44 +216,61 @@ TEST(BenchTests, theTeapotsHaveTheLecturersRowsAndTimes) {
       "the course lecturer's times for his TeapotTest of 2025 (1000x1000 with 400 bubbles, no "
       "acceleration), in Java on his machine, not this one"))
       << j["reference"];
-  // TC02: the lecturer's thread rows, then the structures with every core, then every stage's
-  // tracer through the BVH
-  std::vector<std::string> names{
-      "no acceleration",     "2 threads",          "3 threads",      "4 threads", "threads",
-      "threads + CBR",       "threads + CBR + BVH", "threads + wide BVH", "threads + grid",
-      "Embree 3"};
+  // TC02: the lecturer's thread rows, then the structures with every core (the wide BVH alone
+  // and with light buffers), then every stage's tracer through the wide BVH with light buffers
+  std::vector<std::string> names{"no acceleration",
+                                 "2 threads",
+                                 "3 threads",
+                                 "4 threads",
+                                 "threads",
+                                 "threads + CBR",
+                                 "threads + CBR + BVH",
+                                 "threads + wide BVH",
+                                 "threads + wide BVH + light buffers",
+                                 "threads + grid",
+                                 "Embree 3"};
   for (const std::string& name : STAGE_TRACERS) names.push_back(tracerNamed(name)->stage);
   const json& rows = j["rows"];
   ASSERT_EQ(rows.size(), names.size());
   for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i]["name"], names[i]) << i;
   // TC03: the teapot's tracer (Whitted), the accelerations and the threads of each
   const int every = std::min(cores(), 9);
-  const std::vector<std::string> accels{"none", "none", "none", "none", "none",
-                                        "cbr",  "bvh",  "bvh4", "grid"};
-  const std::vector<int> threads{1, 2, 3, 4, every, every, every, every, every};
-  for (std::size_t i = 0; i < 9; ++i) {
+  const std::vector<std::string> accels{"none", "none", "none", "none",        "none",
+                                        "cbr",  "bvh",  "bvh4", "bvh4+lights", "grid"};
+  const std::vector<int> threads{1, 2, 3, 4, every, every, every, every, every, every};
+  for (std::size_t i = 0; i < 10; ++i) {
     EXPECT_EQ(rows[i]["tracer"], "whitted") << i;
     EXPECT_EQ(rows[i]["accel"], accels[i]) << i;
     EXPECT_EQ(rows[i]["threads"], threads[i]) << i;
   }
   // TC03b: Embree's row after the structures, with every core, the teapot's tracer
-  EXPECT_EQ(rows[9]["tracer"], "whitted");
-  EXPECT_EQ(rows[9]["accel"], "embree");
-  EXPECT_EQ(rows[9]["threads"], every);
+  EXPECT_EQ(rows[10]["tracer"], "whitted");
+  EXPECT_EQ(rows[10]["accel"], "embree");
+  EXPECT_EQ(rows[10]["threads"], every);
+  // TC03c: every stage's tracer through the wide BVH with light buffers, with every core
+  for (std::size_t i = 11; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["tracer"], STAGE_TRACERS[i - 11]) << i;
+    EXPECT_EQ(rows[i]["accel"], "bvh4+lights") << i;
+    EXPECT_EQ(rows[i]["threads"], every) << i;
+  }
   // TC04: his times beside his rows (his 0 threads: 25 s; 2, 3, 4: 13.6, 10.7, 10.7; every
   // core: 9.3), none beside the others
   const std::vector<double> reference{25, 13.6, 10.7, 10.7, 9.3};
   for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(rows[i]["referenceSeconds"], reference[i]) << i;
   for (std::size_t i = 5; i < rows.size(); ++i)
     EXPECT_TRUE(rows[i]["referenceSeconds"].is_null()) << i;
-  // TC05: the nine rows trace the same rays (the same image): a camera ray per pixel and
+  // TC05: the ten rows trace the same rays (the same image): a camera ray per pixel and
   // shadow rays, none reflected (the teapot is matte)
-  for (std::size_t i = 0; i < 9; ++i) {
+  for (std::size_t i = 0; i < 10; ++i) {
     EXPECT_EQ(rows[i]["primary"], 96 * 96) << i;
     EXPECT_EQ(rows[i]["secondary"], 0) << i;
     EXPECT_EQ(rows[i]["shadow"], rows[0]["shadow"]) << i;
   }
   EXPECT_GT(rows[0]["shadow"].get<long>(), 0);
+  // TC05b: the light buffers' row has the wide BVH's image: no pixel differs from the first
+  // row's
+  EXPECT_EQ(rows[7]["pixelsDiffering"], 0);
+  EXPECT_EQ(rows[8]["pixelsDiffering"], 0);
   // TC06: the bubbles have the same rows and times; another scene has the report's rows and no
   // reference at all
   const json b = json::parse(run({"bench", "bubbles", "--width", "16", "--json"}).out);
@@ -266,7 +296,7 @@ TEST(BenchTests, threadsAreTheCoresAskedForWhenTheImageHasTiles) {
   EXPECT_EQ(rows[0]["threads"], 1);
   for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_EQ(rows[i]["threads"], 2) << i;
   // TC02: the same rays on one thread and on two
-  for (std::size_t i = 1; i < 6; ++i)
+  for (std::size_t i = 1; i < EMBREE; ++i)
     for (const char* kind : {"primary", "secondary", "shadow"})
       EXPECT_EQ(rows[i][kind], rows[0][kind]) << i << " " << kind;
   EXPECT_EQ(rows[0]["primary"], 64 * 9);
@@ -309,8 +339,11 @@ TEST(BenchTests, markdownHasACaptionAndTheReferenceTimes) {
         << out[4 + i];
   EXPECT_TRUE(out[4].starts_with("| no acceleration | beams | none | 1 | ")) << out[4];
   EXPECT_TRUE(out[4].ends_with(" | 0.00 | 1.00 | 0 |  |")) << out[4];
-  // TC04: an empty reference cell after them
+  // TC04: an empty reference cell after them; the light buffers' row names its accel
   EXPECT_NE(out[8].find(" s |  | 144 | "), std::string::npos) << out[8];
+  EXPECT_TRUE(out[4 + LIGHTS].starts_with(
+      "| threads + wide BVH + light buffers | beams | bvh4+lights | 1 | "))
+      << out[4 + LIGHTS];
   // TC05: Embree's row: "—" for the nodes it does not count (and, without Embree, for every
   // figure, with the note)
 #if RT_HAVE_EMBREE

@@ -16,6 +16,8 @@
 #include "cli/BuiltinScenes.h"
 #include "cli/CommandLine.h"
 #include "cli/Commands.h"
+#include "cli/RenderCommand.h"
+#include "cli/RenderRequest.h"
 #include "cli/Tracers.h"
 #include "geometries/Plane.h"
 #include "geometries/Sphere.h"
@@ -369,7 +371,8 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       // TC25: an unknown acceleration, with a suggestion and the known ones
       {"TC25",
        {"render", "two-color", "--accel", "bhv"},
-       "rt: --accel: unknown acceleration 'bhv'; did you mean 'bvh'? (known: none cbr bvh bvh4 grid)\n"},
+       "rt: --accel: unknown acceleration 'bhv'; did you mean 'bvh'? (known: none cbr bvh bvh4 "
+       "grid)\n"},
       // TC26: threads beyond the pool's limit
       {"TC26",
        {"render", "two-color", "--threads", "1025"},
@@ -378,6 +381,10 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC27",
        {"probe", "two-color", "--pixel", "0,0", "--threads", "-1"},
        "rt: --threads: expected an integer from 0 to 1024, got '-1'\n"},
+      // TC28: light buffers neither on nor off
+      {"TC28",
+       {"render", "two-color", "--light-buffers", "maybe"},
+       "rt: --light-buffers: expected on or off, got 'maybe'\n"},
   };
   for (const Case& c : cases) {
     const Outcome r = run(c.args);
@@ -419,6 +426,52 @@ TEST(CommandTests, renderStoppedBeforeItsFirstRowWritesNothing) {
   EXPECT_EQ(code, 130);
   EXPECT_EQ(e.str(), "rt: interrupted after 0 of 100 pixels; nothing written to " + out + "\n");
   EXPECT_EQ(test::readFile(out), "the previous image");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Light buffers (mini project 2's render setting)
+
+/// The document `rt render ARGS...` renders: its arguments parsed by rt render's own options.
+SceneDocument renderedDocument(std::vector<std::string> args) {
+  CommandLine line("rt", "rt for the tests", "", "rt 0");
+  RenderArgs into;
+  addRenderOptions(line.addCommand("render", "render", "", [](const Io&) { return 0; }), into);
+  args.insert(args.begin(), "render");
+  EXPECT_TRUE(line.parse(args).run);
+  return sceneFromArguments(into.scene);
+}
+
+TEST(LightBuffersTests, optionSetsTheDocumentsSetting) {
+  // TC01: --light-buffers off and on set render.lightBuffers
+  EXPECT_FALSE(renderedDocument({"two-color", "--light-buffers", "off"}).render.lightBuffers);
+  EXPECT_TRUE(renderedDocument({"two-color", "--light-buffers", "on"}).render.lightBuffers);
+  // TC02: without it, the scene's: a built-in scene's default (on), a file's own (off)
+  EXPECT_TRUE(renderedDocument({"two-color"}).render.lightBuffers);
+  const std::string dir = test::freshDirectory("lightBuffersOption");
+  const std::string file = test::writeText(
+      dir + "/off.json",
+      "{\"camera\": {\"location\": [0, 0, 10], \"target\": [0, 0, 0], \"vpDistance\": 10,\n"
+      " \"vpSize\": [4, 4], \"resolution\": [4, 4]},\n"
+      " \"render\": {\"lightBuffers\": false}}\n");
+  EXPECT_FALSE(renderedDocument({file}).render.lightBuffers);
+  // TC03: the option overrides the file
+  EXPECT_TRUE(renderedDocument({file, "--light-buffers", "on"}).render.lightBuffers);
+}
+
+TEST(LightBuffersTests, onAndOffRenderTheSameBytes) {
+  // TC01: a small galaxy (three spot lights without a size: each gets a buffer) rendered with
+  // and without light buffers: the same PNG, byte for byte
+  const std::string dir = test::freshDirectory("lightBuffersImage");
+  const auto render = [&](const std::string& setting) {
+    const std::string out = dir + "/" + setting + ".png";
+    const Outcome r = run({"render", "galaxy", "--width", "32", "--height", "18", "--silent",
+                           "--light-buffers", setting, "-o", out});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return test::readFile(out);
+  };
+  const std::string on = render("on");
+  ASSERT_FALSE(on.empty());
+  EXPECT_EQ(render("off"), on);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -599,9 +652,11 @@ TEST(ProbeTests, probeOfTheTeapotNamesItsTriangles) {
   const Outcome r = run({"probe", "teapot", "--pixel", "400,400"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"geometry\": 214,\n      \"mesh\": 0,\n      \"triangle\": 214,"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("\"geometry\": 177,\n      \"mesh\": 0,\n      \"triangle\": 177,"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("\"mesh\": 1"), std::string::npos) << r.out;
 }
 

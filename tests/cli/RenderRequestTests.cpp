@@ -59,6 +59,15 @@ TEST(RenderRequestTests, resolvesTheSceneTheOptionsAndTheOutput) {
   EXPECT_EQ("hits", h.tracer->name);
   EXPECT_EQ("hits", h.doc.render.tracer);
   EXPECT_EQ(7u, h.doc.render.seed);
+  // TC05: --light-buffers (mini project 2's option, a setting in every cut) is applied to the
+  // document: off and on as given, and without it the scene's render.lightBuffers (on)
+  SceneArguments off = twoColor();
+  off.settings.lightBuffers = false;
+  EXPECT_FALSE(resolveRenderRequest(off, {}).doc.render.lightBuffers);
+  SceneArguments on = twoColor();
+  on.settings.lightBuffers = true;
+  EXPECT_TRUE(resolveRenderRequest(on, {}).doc.render.lightBuffers);
+  EXPECT_TRUE(r.doc.render.lightBuffers);
 }
 
 TEST(RenderRequestTests, refusesBadInputBeforeTheFirstRay) {

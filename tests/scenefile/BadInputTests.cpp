@@ -123,7 +123,7 @@ const BadInput BAD_INPUTS[] = {
      "}\n",
      "bad.json:4:14: render.fps: unknown key; expected one of: tracer, maxLevel, minK, seed, "
      "gridLines, gridColor, samples, adaptive, adaptiveThreshold, adaptiveDepth, beamDepth, accel "
-     "and 1 more"},
+     "and 2 more"},
     // EP15: unknown key differing only in case
     {"UnknownKeyCase",
      "{\n"
@@ -684,6 +684,22 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"mesh\", \"file\": \"a.obj\", \"normal\": [[0, 0, 1]]}]\n"
      "}\n",
      "bad.json:4:52: geometries[0].normal: unknown key; did you mean 'normals'?"},
+    // EP62: light buffers given as a word, not a boolean
+    {"LightBuffersNotABoolean",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"render\": {\"lightBuffers\": \"yes\"}\n"
+     "}\n",
+     "bad.json:4:30: render.lightBuffers: expected true or false, got \"yes\""},
+    // EP63: light buffers given as a number (1 is no boolean in JSON)
+    {"LightBuffersNumber",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"render\": {\"lightBuffers\": 1}\n"
+     "}\n",
+     "bad.json:4:30: render.lightBuffers: expected true or false, got 1"},
 };
 
 // gtest prints a case by its name.

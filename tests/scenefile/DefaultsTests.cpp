@@ -113,6 +113,26 @@ TEST(DefaultsTest, Lights) {
   EXPECT_TRUE(same(spot.direction.xyz(), Double3(0, 0, -1)));  // stored normalised
 }
 
+TEST(DefaultsTest, LightBuffers) {
+  // EP01: left out: light buffers on, the model's default
+  EXPECT_TRUE(parse("").render.lightBuffers);
+  EXPECT_TRUE(RenderSettings{}.lightBuffers);
+  // EP02: true and false are read as written
+  EXPECT_TRUE(parse("\"render\": {\"lightBuffers\": true}").render.lightBuffers);
+  EXPECT_FALSE(parse("\"render\": {\"lightBuffers\": false}").render.lightBuffers);
+  // EP03: the catalogue's documented default, read by the loader, is the model's
+  bool listed = false;
+  for (const SceneKeyInfo& k : sceneFormatKeys())
+    if (k.object == "render" && k.key == "lightBuffers") {
+      listed = true;
+      EXPECT_EQ(k.defaultText, "true");
+      EXPECT_EQ(k.stage, "mini2_bvh");
+      EXPECT_EQ(parse("\"render\": {\"lightBuffers\": " + k.defaultText + "}").render.lightBuffers,
+                RenderSettings{}.lightBuffers);
+    }
+  EXPECT_TRUE(listed);
+}
+
 TEST(DefaultsTest, TablesAgreeWithTheModel) {
   // EP01: every defaulted key's documented default, read by the loader, gives the model's
   // default: a material object with every default spelt out equals Material{}.

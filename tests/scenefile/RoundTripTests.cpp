@@ -145,6 +145,24 @@ TEST(RoundTripTest, GridLinesAndTheirColour) {
   EXPECT_EQ(dumpScene(baseDocument()).find("grid"), std::string::npos);
 }
 
+TEST(RoundTripTest, LightBuffersWrittenOnlyWhenOff) {
+  // EP01: light buffers off: written in render as false, after the render settings written
+  // always, and read back off
+  SceneDocument doc = baseDocument();
+  doc.render.lightBuffers = false;
+  const std::string text = dumpScene(doc);
+  EXPECT_NE(text.find("\"render\": {\"maxLevel\": 10, \"minK\": 0.001, \"lightBuffers\": false}\n"),
+            std::string::npos)
+      << text;
+  const SceneDocument back = parseScene(text, "dump");
+  EXPECT_FALSE(back.render.lightBuffers);
+  EXPECT_EQ(dumpScene(back), text);
+  // EP02: on, the default: nothing is written, and the file reads back on
+  const std::string onText = dumpScene(baseDocument());
+  EXPECT_EQ(onText.find("lightBuffers"), std::string::npos) << onText;
+  EXPECT_TRUE(parseScene(onText, "dump").render.lightBuffers);
+}
+
 TEST(RoundTripTest, DirectionsComeBackExactly) {
   // EP01: a built-in scene's (1,1,1) normal is stored normalised; the export writes [1, 1, 1],
   // whose normalisation is exactly the stored normal.
