@@ -519,6 +519,98 @@ TEST(LightBufferTests, crossingsAreTheLinearScans) {
   }
 }
 
+TEST(LightBufferTests, certifiedCrossingsAtTheirMargins) {
+  // A point light at the origin and a sphere whose box reaches x = 40: the scene's size S = 40,
+  // so R0 = S/1000 = 0.04 (LightBuffer.cpp), and the certainty margins (how far behind a flat
+  // shape's plane an origin must be, how far inside or outside its edges a crossing)
+  // CERTAIN_MARGIN·S = 0.04. Squares and triangles on axis-aligned planes 0.02 to 3 from the light,
+  // either side (square k: centre c, half sides a and b along the plane's axes u and v).
+  Random random(77);
+  Geometries shapes;
+  shapes.add(Sphere(Point(39, 0, 0), 1));
+  struct Flat {
+    Double3 c, u, v;
+    double a, b;
+  };
+  std::vector<Flat> flats;
+  const Double3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int i = 0; i < 120; ++i) {
+    const Double3 n = axes[i % 3], u = axes[(i + 1) % 3], v = axes[(i + 2) % 3];
+    const Double3 c = n * ((i % 2 != 0 ? -1 : 1) * random.uniform(0.02, 3)) +
+                      u * random.uniform(-2, 2) + v * random.uniform(-2, 2);
+    const double a = random.uniform(0.05, 2), b = random.uniform(0.05, 2);
+    flats.push_back({c, u, v, a, b});
+    if (i % 4 == 0)
+      shapes.add(Triangle(Point(c - u * a - v * b), Point(c + u * a - v * b), Point(c + v * b)));
+    else
+      shapes.add(Polygon({Point(c - u * a - v * b), Point(c + u * a - v * b),
+                          Point(c + u * a + v * b), Point(c - u * a + v * b)}));
+  }
+  LitScene scene = seeThroughScene(shapes);
+  scene.addLight(PointLight(Color(1, 1, 1), Point(0, 0, 0)));
+  const LightBuffers buffers(scene.geometries, scene.geometries.primitives(), scene.lights);
+  ASSERT_NE(buffers.buffer(0), nullptr);
+  const double r0 = buffers.buffer(0)->nearRadius();
+  ASSERT_NEAR(r0, 0.04, 1e-6);  // the box is widened to floats: S a few float ulps above 40
+  const double depth = LightBuffer::CERTAIN_MARGIN * 1000 * r0;
+  // =============== Boundary Values Tests ==================
+  // TC11: origins behind each shape (on the side away from the light) by 0, 0.5, 0.99, 1, 1.01,
+  // 1.5, 3 and 30 times the certainty depth, near the shape's edges u = ±a (within 0.1): shadow
+  // rays as the tracer makes them, and from the exact points (no offset); the scan's crossings,
+  // certified or solved
+  std::vector<ShadowRay> rays;
+  for (const Flat& f : flats) {
+    const Double3 n = f.u.cross(f.v);
+    const double away = n.dot(f.c) > 0 ? 1 : -1;
+    for (const double d : {0.0, 0.5, 0.99, 1.0, 1.01, 1.5, 3.0, 30.0})
+      for (int k = 0; k < 6; ++k) {
+        const double x = (k < 3 ? 1 : -1) * f.a + random.uniform(-0.1, 0.1);
+        const Double3 p = f.c + f.u * x + f.v * random.uniform(-f.b, f.b) + n * (away * d * depth);
+        addShadowRay(rays, scene, 0, Point(p), Vector(n), r0);
+        const double distance = std::sqrt(p.lengthSquared());
+        rays.push_back({Ray::withUnitDirection(Point(p), Vector::unchecked(-p / distance)), 1e-9,
+                        distance - 1e-9, 0, Aim::Either});
+      }
+  }
+  const Tally margins = expectLikeTheScan(scene, buffers, rays);
+  EXPECT_GT(margins.taken, static_cast<int>(rays.size()) / 2);
+  EXPECT_GT(margins.certified, 0u);
+  EXPECT_LE(static_cast<std::uint64_t>(margins.relaxed), margins.certified);
+  // TC12: grazing rays: rectangles and triangles 5 to 50 wide on the planes z = ±(0.1 … 1.5),
+  // origins up to 150 away from the light (at the origin, and at (0.5, −0.25, 0.05)): slopes
+  // |n·dir| from 10^-4 up, through MIN_SLOPE (a crossing's slope to be certified) and
+  // 2·MIN_SLOPE (a cell's, to be INSIDE or OUTSIDE)
+  Geometries flatLand;
+  for (int i = 0; i < 60; ++i) {
+    const double h = (i % 2 != 0 ? 1 : -1) * random.uniform(0.1, 1.5);
+    const double x = random.uniform(-100, 50), y = random.uniform(-100, 50);
+    const double a = random.uniform(5, 50), b = random.uniform(5, 50);
+    if (i % 3 == 0)
+      flatLand.add(Triangle(Point(x, y, h), Point(x + a, y, h), Point(x, y + b, h)));
+    else
+      flatLand.add(Polygon(
+          {Point(x, y, h), Point(x + a, y, h), Point(x + a, y + b, h), Point(x, y + b, h)}));
+  }
+  LitScene grazed = seeThroughScene(flatLand);
+  grazed.addLight(PointLight(Color(1, 1, 1), Point(0, 0, 0)));
+  grazed.addLight(PointLight(Color(1, 1, 1), Point(0.5, -0.25, 0.05)));
+  const LightBuffers grazedBuffers(grazed.geometries, grazed.geometries.primitives(),
+                                   grazed.lights);
+  ASSERT_NE(grazedBuffers.buffer(0), nullptr);
+  ASSERT_NE(grazedBuffers.buffer(1), nullptr);
+  std::vector<ShadowRay> grazing;
+  for (std::uint32_t k = 0; k < 2; ++k)
+    for (int i = 0; i < 4000; ++i)
+      addShadowRay(
+          grazing, grazed, k,
+          Point(random.uniform(-150, 150), random.uniform(-150, 150), random.uniform(-2, 2)),
+          Vector(0, 0, 1), grazedBuffers.buffer(k)->nearRadius());
+  const Tally slopes = expectLikeTheScan(grazed, grazedBuffers, grazing);
+  EXPECT_GT(slopes.taken, static_cast<int>(grazing.size()) / 2);
+  EXPECT_GT(slopes.certified, 0u);
+  EXPECT_LE(static_cast<std::uint64_t>(slopes.relaxed), slopes.certified);
+}
+
 /// The mixed shapes with looks for shadows: rows of kT 0 (opaque: 1 in 4), 1 (clear: 1 in 8) and
 /// partly transparent, a different kT per channel in [0.1, 0.95]; the point and the spot light.
 LitScene shadedScene(std::uint64_t seed) {
