@@ -893,12 +893,14 @@ TEST(LightBufferTests, cellsListWhatTheLightSees) {
                              std::vector<LightSource>{PointLight(Color(1, 1, 1), light)});
   const LightBuffer* lb = buffers.buffer(0);
   ASSERT_NE(lb, nullptr);
-  // 48 bounded primitives (2·48 <= 16²): 16 cells a side. The scene's size S is about 21.5 (the
-  // spheres' boxes reach 20.5 from the light), R0 = S/1000.
+  // 46 bounded primitives (2·46 <= 16²): 16 cells a side. The scene's size S, the largest
+  // coordinate of the boxes, is between 20.5 − 2.25 and 20.5 + 2.25 (the spheres' boxes reach
+  // 20.5 from the light, whose coordinates are at most 2.25), and R0 = S/1000: the tiny sphere's
+  // box (within 0.007 of the light) is within R0.
   EXPECT_EQ(lb->resolution(), 16);
   const double r0 = lb->nearRadius();
-  ASSERT_GT(r0, 0.0215);
-  ASSERT_LT(r0, 0.0235);
+  ASSERT_GE(r0, 0.01825);
+  ASSERT_LE(r0, 0.02275 * (1 + 1e-6));
   // ============ Equivalence Partitions Tests ==============
   // TC01: each sphere is listed, as a sphere, in the cell of its direction from the light, at a
   // distance between its box's (at least 20 − 0.5·√3) and its own (19.5); not in the cell of
@@ -981,7 +983,7 @@ TEST(LightBufferTests, cellsListWhatTheLightSees) {
   EXPECT_EQ(lb->cellOf(Double3(-1, 0, 0)), (std::array<int, 3>{1, 8, 8}));
   EXPECT_EQ(lb->cellOf(Double3(0, 0, -1)), (std::array<int, 3>{5, 8, 8}));
   // TC12: on the cube's edges and corners the first axis wins (x before y before z); u = 1 is
-  // in the last cell (the face reaches 1.001: 8 + 8/1.001 = 15.99)
+  // in the last cell and −1 in the first (the face reaches ±1.001: 8 ± 8/1.001 = 15.99, 0.008)
   EXPECT_EQ(lb->cellOf(Double3(1, 1, 0)), (std::array<int, 3>{0, 15, 8}));
   EXPECT_EQ(lb->cellOf(Double3(-1, 1, -1)), (std::array<int, 3>{1, 15, 0}));
   EXPECT_EQ(lb->cellOf(Double3(0, -1, 1)), (std::array<int, 3>{3, 15, 8}));
