@@ -76,8 +76,8 @@ class LightBuffer {
   /// in float rounded down).
   struct Entry {
     float distance;
-    /// How it is tested (the top four bits: Flags) and what: the primitive's number, or for a
-    /// flat shape its record in the FlatShapes table (the low 28 bits).
+    /// How it is tested (the top seven bits: Flags) and what: the primitive's number, or for a
+    /// flat shape its record in the FlatShapes table (the low FLAG_SHIFT = 25 bits).
     std::uint32_t code;
     /// The part of the cell the primitive's padded rectangle covers, in 256ths of the cell:
     /// columns [sub[0], sub[1]], rows [sub[2], sub[3]]. A ray outside it cannot hit the

@@ -298,7 +298,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
   LightBuffer lb;
   if (primitives.size() > INDEX_MASK + 1u)
     throw std::length_error("LightBuffer: " + std::to_string(primitives.size()) +
-                            " primitives, more than an entry can number (2^30)");
+                            " primitives, more than an entry can number (2^25)");
   lb.primitives_ = primitives;
   lb.flats_ = &flats;
   lb.flatPlanes_.reserve(flats.size());
