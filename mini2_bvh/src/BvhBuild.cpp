@@ -34,6 +34,7 @@
 #include "Concurrently.h"
 #include "bvh/BoundingBox.h"
 #include "bvh/Bvh.h"
+#include "bvh/HugePages.h"
 
 namespace rt {
 
@@ -551,7 +552,9 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   // number of threads (build::chunkCount: a chunk per 16,384 primitives at least).
   const std::size_t count = primitives.size();
   const int chunks = build::chunkCount(count, threads);
-  std::vector<BuildRecord> records(count);
+  std::vector<BuildRecord> records;
+  reserveHuge(records, count);  // 32 MiB for 10^6 stars (HugePages.h)
+  records.resize(count);
   std::vector<RecordChunk> made(static_cast<std::size_t>(chunks));
   build::concurrently(chunks, [&](int k) {
     makeRecords(primitives, static_cast<std::uint32_t>(build::chunkBegin(count, chunks, k)),
@@ -580,8 +583,8 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
 
   // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The reservation
   // is address space: only the nodes written take memory, and shrink_to_fit returns the rest.
-  nodes_.reserve(2 * records.size() - 1);
-  sphereShapes_.reserve(sphereCount);
+  reserveHuge(nodes_, 2 * records.size() - 1);
+  reserveHuge(sphereShapes_, sphereCount);
   otherShapes_.reserve(records.size() - sphereCount);
   depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth)
                .build(threads, all);
@@ -612,6 +615,7 @@ void Bvh::makeCompactSpheres(int threads) {
   // per thread (build::chunkCount).
   const std::span<const Geometry> shapes = primitives_.shapes();
   const std::size_t count = sphereShapes_.size();
+  reserveHuge(spheres_, count);
   spheres_.assign(count, CompactSphere{});
   const int chunks = build::chunkCount(count, threads);
   build::concurrently(chunks, [&](int k) {
