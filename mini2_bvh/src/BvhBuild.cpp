@@ -582,7 +582,9 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   if (records.empty()) return;
 
   // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The reservation
-  // is address space: only the nodes written take memory, and shrink_to_fit returns the rest.
+  // is address space: only the nodes written take memory. The binary BVH's constructor returns
+  // the rest (shrink_to_fit, a copy); the wide BVH frees the whole array once it has collapsed
+  // it, with no copy.
   reserveHuge(nodes_, 2 * records.size() - 1);
   reserveHuge(sphereShapes_, sphereCount);
   otherShapes_.reserve(records.size() - sphereCount);
@@ -591,7 +593,6 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
 
   // The records are done with before the compact spheres are made: the two never coexist.
   std::vector<BuildRecord>().swap(records);
-  nodes_.shrink_to_fit();
   makeFlatShapes();
 }
 
