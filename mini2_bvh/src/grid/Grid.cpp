@@ -12,6 +12,7 @@
 
 #include "bvh/BoundingBox.h"
 #include "bvh/FloatBox.h"
+#include "bvh/HugePages.h"
 #include "bvh/SlabRay.h"
 #include "bvh/UnboundedShapes.h"
 #include "intersections/HitRules.h"
@@ -66,8 +67,12 @@ bool isFinite(const FloatBox& b) noexcept {
 }  // namespace
 
 Grid::Grid(Primitives primitives) : primitives_(primitives) {
+  // The large arrays on 2 MiB pages where the system offers them (HugePages.h); the two lists
+  // reserved for every primitive (address space: only what is written takes memory).
   std::vector<std::uint32_t> bounded;
   std::vector<Aabb> boxes;
+  reserveHuge(bounded, primitives.size());
+  reserveHuge(boxes, primitives.size());
   for (std::uint32_t i = 0; i < primitives.size(); ++i) {
     const std::optional<Aabb> exact = boundingBox(primitives, i);
     const FloatBox stored = exact ? conservativeBox(*exact) : FloatBox::empty();
@@ -101,7 +106,9 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
     if (u >= n_[a]) return n_[a] - 1;
     return static_cast<int>(u);
   };
-  std::vector<CellRange> ranges(bounded.size());
+  std::vector<CellRange> ranges;
+  reserveHuge(ranges, bounded.size());
+  ranges.resize(bounded.size());
   for (std::size_t s = 0; s < bounded.size(); ++s)
     for (int a = 0; a < 3; ++a) {
       const double margin = CELL_MARGIN * width_[a];
@@ -116,6 +123,7 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
            static_cast<std::size_t>(n_[0]) *
                (static_cast<std::size_t>(y) + static_cast<std::size_t>(n_[1]) * z);
   };
+  reserveHuge(offsets_, cells + 1);
   offsets_.assign(cells + 1, 0);
   std::uint64_t total = 0;
   for (const CellRange& r : ranges) {
@@ -129,8 +137,11 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
                               std::to_string(bounded.size()) + " shapes");
   }
   for (std::size_t c = 0; c < cells; ++c) offsets_[c + 1] += offsets_[c];
+  reserveHuge(entries_, total);
   entries_.resize(total);
-  std::vector<std::uint32_t> next(offsets_.begin(), offsets_.end() - 1);
+  std::vector<std::uint32_t> next;
+  reserveHuge(next, cells);
+  next.assign(offsets_.begin(), offsets_.end() - 1);
   for (std::size_t s = 0; s < bounded.size(); ++s) {
     const CellRange& r = ranges[s];
     for (int z = r.lo[2]; z <= r.hi[2]; ++z)
