@@ -4,8 +4,8 @@
 /// tens of MiB each) backed by 2 MiB pages where the system offers them.
 ///
 /// Every 4 KiB page of a fresh array costs a page fault the first time it is written: for 10^6
-/// stars some 50 000 of them, a third of the BVH's build on this project's virtual machine, and
-/// more on the days its page faults are slow. Linux backs an anonymous range with transparent
+/// stars some 33 000 of them, a third of the BVH's build on this project's virtual machine on
+/// the days its page faults are slow. Linux backs an anonymous range with transparent
 /// huge pages of 2 MiB where the process asks for them (madvise(MADV_HUGEPAGE), the setting
 /// "madvise" of /sys/kernel/mm/transparent_hugepage/enabled, Debian's default) or everywhere
 /// (the setting "always"): one fault per 2 MiB. The advice is a hint: nothing changes but the
