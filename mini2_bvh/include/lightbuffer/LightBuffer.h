@@ -68,6 +68,10 @@ struct LightBufferOptions {
   /// per cell; a finer grid that would hold more is halved, down to 8 cells a side, and below
   /// that no buffer is made (build() returns nullopt).
   std::size_t entriesPerPrimitive = 64;
+  /// The most bounded primitives a buffer may keep on its near list (within R0 of the light),
+  /// which every query tests; with more, no buffer is made (build() returns nullopt) and the walk,
+  /// which tests about as many shapes per ray, answers instead.
+  std::size_t nearPrimitives = 8;
 };
 
 class LightBuffer {
@@ -108,7 +112,8 @@ class LightBuffer {
 
   /// The buffer of a point light at `light` over the primitives (viewed, not copied: they must
   /// outlive it unchanged); nullopt when its lists would exceed options' budget even at 8 cells a
-  /// side. @throws std::invalid_argument when options.resolution is negative or above 1024.
+  /// side, or when more than options.nearPrimitives bounded primitives lie within R0 of the
+  /// light. @throws std::invalid_argument when options.resolution is negative or above 1024.
   /// flats: the records of the primitives' triangles and polygons (shapes), and flatOf[i] the
   /// record of shape i (any value for other shapes); both must outlive the buffer.
   static std::optional<LightBuffer> build(Primitives primitives, const Point& light,
@@ -150,6 +155,18 @@ class LightBuffer {
 
   /// The largest distance ρ from the light to a ray's line, relative to R0, that the query takes.
   static constexpr double AIM = 1e-4;
+  /// The near radius R0 for a scene of size S (the largest coordinate of the primitives' trusted
+  /// boxes and of the light, at least 1) whose bounded primitives' boxes lie within E of the
+  /// light (their farthest corners): 10^-3 of the smaller of S and E, and at least 10^-4·S. So a
+  /// scene far from the origin relative to its size does not put its shapes around the light on
+  /// the near list. The proofs ask only R0 in [10^-4·S, 10^-3·S]: R0 far above the rounding of
+  /// coordinates of size S (some 10^-16·S) and AIM·R0 above the shadow rays' shift off the
+  /// surface (RayOffset: 10^-9 of the point's largest coordinate).
+  static double nearRadiusOf(double size, double reach) noexcept {
+    return std::max(NEAR_FLOOR * size, NEAR * std::min(size, reach));
+  }
+  static constexpr double NEAR = 1e-3;
+  static constexpr double NEAR_FLOOR = 1e-4;
   /// The half side of a face in (u, v), past 1 so that a direction near a cube edge is found on
   /// either face: 1 + MARGIN, MARGIN far above the 3.1·θ of the proof.
   static constexpr double FACE_MARGIN = 1e-3;

@@ -1,9 +1,15 @@
 // The light buffer's build: every primitive's distance from the light and its rectangle of cells
 // on each face of the cube (LightBuffer.h proves why these lists never miss a hit), and the two
 // shortcuts the query takes for flat shapes, proved here. Notation as in LightBuffer.h: c the
-// light, R0 the near radius (10^-3 of the scene's size S, the largest coordinate of the
-// primitives' trusted boxes and of c, at least 1), a ray o + t·dir aimed at c with
-// w·g >= R0, ρ <= 10^-4·R0 and tMax <= w·g + R0/2; u = 2^-53.
+// light, S the scene's size (the largest coordinate of the primitives' trusted boxes and of c, at
+// least 1), R0 the near radius (LightBuffer::nearRadiusOf: 10^-3 of S, or less when the
+// primitives lie closer to c than S, but never below 10^-4·S; the arguments below use only
+// R0 >= 10^-4·S, where a rounding of coordinates of size S, some 10^-16·S, is negligible), a ray
+// o + t·dir aimed at c with w·g >= R0, ρ <= 10^-4·R0 and tMax <= w·g + R0/2; u = 2^-53.
+//
+// **The box's rectangle.** Its corners' offsets from c, of size S, are exact to u·S, and the face's
+// projection divides them by at least R0/4: the (u, v) they give are exact to some 10^5·u, far
+// below the rectangle's padding (4·1.2·AIM).
 //
 // **The side test.** A flat shape (or a plane) gets the test only when its plane is at least R0
 // from c. The ray's point at tMax lies within R0/2 + ρ < R0 of c (|X − c|² = (w·g − t)² + ρ²),
@@ -281,6 +287,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
   std::vector<Placed> placed;
   placed.reserve(primitives.size());
   double scale = std::max(1.0, largestAbs(c));
+  double farthest = 0;  // E: the farthest corner of a bounded primitive's box from the light
   std::size_t bounded = 0;
   for (std::uint32_t i = 0; i < primitives.size(); ++i) {
     const std::optional<Aabb> box = boundingBox(primitives, i);
@@ -291,6 +298,11 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
     placed.push_back(Placed{i, 0, finite ? Placed::Kind::Box : Placed::Kind::Near, trusted, {}});
     if (finite) {
       scale = std::max({scale, largestAbs(trusted.lo), largestAbs(trusted.hi)});
+      const auto far = [&c, &trusted](int k) {
+        return std::max(std::abs(component(trusted.lo, k) - component(c, k)),
+                        std::abs(component(trusted.hi, k) - component(c, k)));
+      };
+      farthest = std::max(farthest, std::sqrt(far(0) * far(0) + far(1) * far(1) + far(2) * far(2)));
       ++bounded;
     }
   }
@@ -307,7 +319,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
     lb.flatPlanes_.push_back(FlatPlane{f.n, f.n.dot(f.q), f.shape});
   }
   lb.light_ = light;
-  lb.nearRadius_ = 1e-3 * scale;
+  lb.nearRadius_ = nearRadiusOf(scale, bounded > 0 ? farthest : scale);
   lb.aimSquared_ = (AIM * lb.nearRadius_) * (AIM * lb.nearRadius_);
   const double r0 = lb.nearRadius_;
   lb.sideMargin_ = 1e-13 * scale;
@@ -329,6 +341,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
   // Within R0 of the light, or unbounded and not a plane: on the near list. Planes go to the
   // cells whose directions reach them, boxes to the cells they cover.
   std::vector<std::uint32_t> faced;  // indices into placed
+  std::size_t nearBounded = 0;
   for (std::size_t k = 0; k < placed.size(); ++k) {
     Placed& p = placed[k];
     if (p.kind == Placed::Kind::Box) {
@@ -347,6 +360,9 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
       lb.planes_.push_back(PlaneEntry{p.towards * -1.0, (p.towards * -1.0).dot(q),
                                       1e-13 * std::max({scale, largestAbs(q)}), p.primitive});
     } else if (p.kind != Placed::Kind::Box || p.distance <= r0) {
+      // Bounded shapes this close are tested by every query; the walk tests about as many.
+      if (p.kind == Placed::Kind::Box && ++nearBounded > options.nearPrimitives)
+        return std::nullopt;
       lb.near_.push_back(Entry{floatBelow(p.distance), p.primitive});  // GENERIC
     } else {
       faced.push_back(static_cast<std::uint32_t>(k));
