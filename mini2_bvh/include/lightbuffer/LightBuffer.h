@@ -287,9 +287,10 @@ template <typename Visit>
   for (; e != end && e->distance <= reachF; ++e) {
     const std::uint32_t index = e->index();
     const std::uint32_t flags = e->flags();
-    // One branch for the four comparisons: which way it goes is as random as the rays.
-    if (!(flags & WHOLE) &&
-        ((sub[0] < e->sub[0]) | (sub[0] > e->sub[1]) | (sub[1] < e->sub[2]) | (sub[1] > e->sub[3])))
+    // One branch for the four comparisons (a bitwise or of ints, not ||): which way it goes is
+    // as random as the rays.
+    if (!(flags & WHOLE) && (int{sub[0] < e->sub[0]} | int{sub[0] > e->sub[1]} |
+                             int{sub[1] < e->sub[2]} | int{sub[1] > e->sub[3]}))
       continue;
     std::uint32_t primitive = index;
     Roots roots;
