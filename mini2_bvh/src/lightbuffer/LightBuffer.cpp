@@ -94,6 +94,15 @@ double boxDistance(const Aabb& b, const Double3& c) noexcept {
   return std::sqrt(d.lengthSquared()) * (1 - 1e-9);
 }
 
+/// The distance from c to the box's farthest corner.
+double farthestCorner(const Aabb& b, const Double3& c) noexcept {
+  const auto far = [](double lo, double hi, double x) {
+    return std::max(std::abs(lo - x), std::abs(hi - x));
+  };
+  const Double3 d(far(b.lo.x, b.hi.x, c.x), far(b.lo.y, b.hi.y, c.y), far(b.lo.z, b.hi.z, c.z));
+  return std::sqrt(d.lengthSquared());
+}
+
 /// A lower bound of the distance from c to an unbounded shape's points (and to its computed
 /// hits, which lie off the exact surface by rounding): a plane's or a tube's exact distance less
 /// a margin of 10^-9 of the coordinates involved; 0 for anything else. A plane's unit normal
@@ -298,11 +307,7 @@ std::optional<LightBuffer> LightBuffer::build(Primitives primitives, const Point
     placed.push_back(Placed{i, 0, finite ? Placed::Kind::Box : Placed::Kind::Near, trusted, {}});
     if (finite) {
       scale = std::max({scale, largestAbs(trusted.lo), largestAbs(trusted.hi)});
-      const auto far = [&c, &trusted](int k) {
-        return std::max(std::abs(component(trusted.lo, k) - component(c, k)),
-                        std::abs(component(trusted.hi, k) - component(c, k)));
-      };
-      farthest = std::max(farthest, std::sqrt(far(0) * far(0) + far(1) * far(1) + far(2) * far(2)));
+      farthest = std::max(farthest, farthestCorner(trusted, c));
       ++bounded;
     }
   }
