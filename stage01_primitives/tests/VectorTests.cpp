@@ -31,7 +31,7 @@ TEST(VectorTests, constructor) {
   EXPECT_THAT([] { Vector(0, 0, 0); },
               ThrowsMessage<std::invalid_argument>(HasSubstr("Vector constructor")));
   // TC12: the zero vector from Double3::ZERO throws
-  EXPECT_THROW(Vector(Double3::ZERO), std::invalid_argument);
+  EXPECT_THROW((void)Vector(Double3::ZERO), std::invalid_argument);
   // TC13: components all just below 2^-40 are zero: throws
   EXPECT_THROW(Vector(1e-13, -1e-13, 0), std::invalid_argument);
   // TC14: one component exactly 2^-40 is not zero: constructs
