@@ -61,8 +61,14 @@ Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3
   const Material& m = h.appearance->material;
   constexpr SecondaryKind REFRACTED = SecondaryKind::Refracted;
   constexpr SecondaryKind REFLECTED = SecondaryKind::Reflected;
+  // Refraction first, in a statement of its own: the two rays may draw random numbers from ctx
+  // (mini project 1's beams), and the operands of a + are evaluated in an order C++ leaves
+  // unspecified (GCC takes the right one first, Clang the left), so `a + b` would make the
+  // image depend on the compiler.
   if (m.ior == 1) {
-    return secondaryEffect(h, refractStraight(h.v), REFRACTED, level, k, m.kT, ctx) +
+    const Color refracted =
+        secondaryEffect(h, refractStraight(h.v), REFRACTED, level, k, m.kT, ctx);
+    return refracted +
            secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR, ctx);
   }
   const Refraction refraction = refract(h.v, h.normal, m.ior);

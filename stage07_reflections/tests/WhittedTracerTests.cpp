@@ -1,12 +1,14 @@
 // Tests of WhittedTracer with hand-computed colours: a mirror, transparent sheets, the missed
 // secondary ray, the depth limit, the index of refraction (Fresnel at normal incidence, total
-// internal reflection), the secondary-ray hook, and the settings' validation.
+// internal reflection), the secondary-ray hook, the secondary rays' order, and the settings'
+// validation.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
@@ -236,6 +238,46 @@ TEST(WhittedTracerTests, secondaryColorHook) {
   expectColor(Color(265, 15, 15), mirrorTracer.traceRay(down));
   EXPECT_EQ(1, mirrorTracer.reflected);
   EXPECT_EQ(0, mirrorTracer.refracted);
+}
+
+/// A tracer that records the kinds of its secondary rays in the order they are cast (each sees
+/// black).
+class OrderRecorder : public WhittedTracer {
+ public:
+  using WhittedTracer::WhittedTracer;
+  mutable std::vector<SecondaryKind> order;
+
+ protected:
+  Color secondaryColor(const HitContext&, const Ray&, SecondaryKind kind, int, const Double3&,
+                       SampleContext&) const override {
+    order.push_back(kind);
+    return Color::BLACK;
+  }
+};
+
+TEST(WhittedTracerTests, refractedRayCastBeforeReflected) {
+  // The order matters once secondary rays draw random numbers (mini project 1's beams): each
+  // takes the next ones from the sample's stream, so it must not depend on the compiler.
+  constexpr SecondaryKind T = SecondaryKind::Refracted, R = SecondaryKind::Reflected;
+  LitScene s = baseScene();
+  Material m;
+  m.kT = Double3(0.4);
+  m.kR = Double3(0.3);
+  const std::uint32_t sheet = s.add(square(0), Color(5, 5, 5), m);
+  // ============ Equivalence Partitions Tests ==============
+  {
+    // TC01: ior 1 (the course's straight-through refraction): refracted, then reflected
+    const OrderRecorder tracer(s);
+    tracer.traceRay(down);
+    EXPECT_EQ((std::vector<SecondaryKind>{T, R}), tracer.order);
+  }
+  {
+    // TC02: ior 1.5 (Snell and Fresnel): the same order
+    s.appearances[sheet].material.ior = 1.5;
+    const OrderRecorder tracer(s);
+    tracer.traceRay(down);
+    EXPECT_EQ((std::vector<SecondaryKind>{T, R}), tracer.order);
+  }
 }
 
 TEST(WhittedTracerTests, settingsValidation) {
