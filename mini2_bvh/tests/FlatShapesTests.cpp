@@ -331,7 +331,10 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
 /// the plane (planeT > 0) but pass beside the shape.
 void expectStage3Roots(Simd simd) {
   const FlatScene scene = randomFlatScene(2024, 2700);
-  ASSERT_GT(scene.flat.size(), 2500u) << scene.rejected << " shapes refused by stage 2";
+  // Nearly all of them accepted: GCC 12 draws a scene of 2501 flat shapes from this seed, Clang
+  // 14 one of 2499 (they evaluate the arguments of a call that draws several numbers in
+  // opposite orders).
+  ASSERT_GT(scene.flat.size(), 2400u) << scene.rejected << " shapes refused by stage 2";
   const FlatShapes flats(Primitives(std::span<const Geometry>(scene.shapes)), scene.flat, simd);
   ASSERT_EQ(flats.size(), scene.flat.size());
   EXPECT_EQ(flats.simd(), simd);
