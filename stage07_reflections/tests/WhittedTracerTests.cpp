@@ -201,15 +201,17 @@ TEST(WhittedTracerTests, indexOfRefraction) {
 }
 
 /// A tracer whose reflected rays all see (1000,0,0) and refracted rays (0,0,1000): the hook mini
-/// project 1 overrides. It records the kind of each call.
+/// project 1 overrides. It counts the calls of each kind and records their order.
 class ConstantSecondary : public WhittedTracer {
  public:
   using WhittedTracer::WhittedTracer;
   mutable int reflected = 0, refracted = 0;
+  mutable std::vector<SecondaryKind> order;
 
  protected:
   Color secondaryColor(const HitContext&, const Ray&, SecondaryKind kind, int, const Double3&,
                        SampleContext&) const override {
+    order.push_back(kind);
     if (kind == SecondaryKind::Reflected) {
       ++reflected;
       return Color(1000, 0, 0);
@@ -240,21 +242,6 @@ TEST(WhittedTracerTests, secondaryColorHook) {
   EXPECT_EQ(0, mirrorTracer.refracted);
 }
 
-/// A tracer that records the kinds of its secondary rays in the order they are cast (each sees
-/// black).
-class OrderRecorder : public WhittedTracer {
- public:
-  using WhittedTracer::WhittedTracer;
-  mutable std::vector<SecondaryKind> order;
-
- protected:
-  Color secondaryColor(const HitContext&, const Ray&, SecondaryKind kind, int, const Double3&,
-                       SampleContext&) const override {
-    order.push_back(kind);
-    return Color::BLACK;
-  }
-};
-
 TEST(WhittedTracerTests, refractedRayCastBeforeReflected) {
   // The order matters once secondary rays draw random numbers (mini project 1's beams): each
   // takes the next ones from the sample's stream, so it must not depend on the compiler.
@@ -267,14 +254,14 @@ TEST(WhittedTracerTests, refractedRayCastBeforeReflected) {
   // ============ Equivalence Partitions Tests ==============
   {
     // TC01: ior 1 (the course's straight-through refraction): refracted, then reflected
-    const OrderRecorder tracer(s);
+    const ConstantSecondary tracer(s);
     tracer.traceRay(down);
     EXPECT_EQ((std::vector<SecondaryKind>{T, R}), tracer.order);
   }
   {
     // TC02: ior 1.5 (Snell and Fresnel): the same order
     s.appearances[sheet].material.ior = 1.5;
-    const OrderRecorder tracer(s);
+    const ConstantSecondary tracer(s);
     tracer.traceRay(down);
     EXPECT_EQ((std::vector<SecondaryKind>{T, R}), tracer.order);
   }
