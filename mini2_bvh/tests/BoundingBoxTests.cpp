@@ -94,8 +94,9 @@ TEST(BoundingBoxTests, cylinder) {
   Random random(3);
   for (int c = 0; c < 50; ++c) {
     const Double3 a = random.direction();
-    const Cylinder cyl(random.uniform(0.1, 3), Ray(Point(random.direction() * 5), Vector(a)),
-                       random.uniform(0.1, 8));
+    const double radius = random.uniform(0.1, 3);
+    const Point head(random.direction() * 5);
+    const Cylinder cyl(radius, Ray(head, Vector(a)), random.uniform(0.1, 8));
     const Aabb box = boundingBox(cyl);
     const auto [u, v] = basisAround(cyl.axis().direction().xyz());
     for (int i = 0; i < 100; ++i) {
@@ -104,8 +105,8 @@ TEST(BoundingBoxTests, cylinder) {
       const Double3& base = cyl.axis().head().xyz();
       const Double3& dir = cyl.axis().direction().xyz();
       const Double3 side = base + dir * random.uniform(0, cyl.height()) + radial;
-      const Double3 cap = base + dir * (random.chance(0.5) ? 0 : cyl.height()) +
-                          radial * std::sqrt(random.uniform(0, 1));
+      const double along = random.chance(0.5) ? 0 : cyl.height();
+      const Double3 cap = base + dir * along + radial * std::sqrt(random.uniform(0, 1));
       EXPECT_TRUE(holds(box, side));
       EXPECT_TRUE(holds(box, cap));
     }

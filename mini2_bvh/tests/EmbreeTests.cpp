@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <random>
 #include <set>
 #include <utility>
 #include <vector>
@@ -22,6 +21,7 @@
 #include "glossy/Samplers.h"
 #include "parallel/TilePool.h"
 #include "support/AllocationCounter.h"
+#include "support/TestRandom.h"
 
 namespace rt {
 namespace {
@@ -208,12 +208,11 @@ TEST(EmbreeTests, galaxyRaysAreTheLinearScans) {
   const GalaxySetup setup = galaxy(GalaxyParams{.arms = 7, .perArm = 12});
   const Geometries& g = setup.scene.geometries;
   const EmbreeScene embree(g);
-  std::mt19937_64 engine(7);
-  std::uniform_real_distribution<double> u(-1, 1);
+  test::TestRandom random(7);
   int closestDiffer = 0, setsDiffer = 0, hits = 0;
   for (int k = 0; k < 2000; ++k) {
-    const Ray ray(Point(40 * u(engine), 10 + 10 * u(engine), 40 * u(engine)),
-                  Vector(u(engine), u(engine), u(engine)));
+    const Double3 o = random.inCube(-1, 1);
+    const Ray ray(Point(40 * o.x, 10 + 10 * o.y, 40 * o.z), Vector(random.inCube(-1, 1)));
     const std::optional<Hit> a = g.closestHit(ray), b = embree.closestHit(ray);
     hits += a ? 1 : 0;
     if (a.has_value() != b.has_value() ||

@@ -133,14 +133,10 @@ Geometry randomFlatShape(Random& random, int kind) {
   const Frame f = randomFrame(random);
   switch (kind % 9) {
     case 0:
-      return Triangle(Point(c + random.direction() * s), Point(c + random.direction() * s),
-                      Point(c + random.direction() * s));
+      return random.triangleAround(c, s);
     case 1: {
       const Double3 far = c * std::pow(10.0, random.uniform(1, 4));
-      const double size = std::pow(10.0, random.uniform(-2, 1));
-      return Triangle(Point(far + random.direction() * size),
-                      Point(far + random.direction() * size),
-                      Point(far + random.direction() * size));
+      return random.triangleAround(far, std::pow(10.0, random.uniform(-2, 1)));
     }
     case 2: {
       const double h = s * std::pow(10.0, -random.uniform(5, 11));
@@ -149,9 +145,8 @@ Geometry randomFlatShape(Random& random, int kind) {
     }
     case 3: {
       const double reach = random.chance(0.3) ? 1e6 : 20;
-      const Double3 p(std::round(random.uniform(-reach, reach)),
-                      std::round(random.uniform(-reach, reach)),
-                      std::round(random.uniform(-reach, reach)));
+      const Double3 q = random.inCube(-reach, reach);
+      const Double3 p(std::round(q.x), std::round(q.y), std::round(q.z));
       const int i = random.integer(0, 2), j = (i + random.integer(1, 2)) % 3;
       const double a = random.integer(1, 4), b = random.integer(1, 4);
       return Polygon(
@@ -167,8 +162,7 @@ Geometry randomFlatShape(Random& random, int kind) {
     }
     case 5: {
       std::vector<Point> v = onEllipse(random, c, f, s, s * random.uniform(0.3, 1), 4);
-      if (random.chance(0.5))
-        v[3] = Point(v[3].xyz() + f.n * (random.chance(0.5) ? 5e-13 : -5e-13));
+      if (random.chance(0.5)) v[3] = Point(v[3].xyz() + f.n * (5e-13 * random.sign()));
       return Polygon(std::move(v));
     }
     case 6: {
@@ -183,11 +177,11 @@ Geometry randomFlatShape(Random& random, int kind) {
             random, {Point(at(c, f, 0, 0)), Point(at(c, f, s, -e * s)), Point(at(c, f, 2 * s, 0)),
                      Point(at(c, f, 2 * s, 2 * s)), Point(at(c, f, 0, 2 * s))}));
       }
-      return Polygon(onEllipse(random, c, f, s, s * random.uniform(0.3, 1), random.integer(5, 8)));
+      const double rb = s * random.uniform(0.3, 1);
+      return Polygon(onEllipse(random, c, f, s, rb, random.integer(5, 8)));
     }
     default:
-      return Polygon({Point(c + random.direction() * s), Point(c + random.direction() * s),
-                      Point(c + random.direction() * s)});
+      return Polygon(random.cornersAround(c, s));
   }
 }
 
@@ -253,7 +247,8 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
     return sum / total;
   };
   const auto edgePoint = [&](double w) { return vertex(j) + (vertex(j + 1) - vertex(j)) * w; };
-  const Double3 around = c + random.direction() * (size * random.uniform(0.5, 3));
+  const Double3 toAround = random.direction();
+  const Double3 around = c + toAround * (size * random.uniform(0.5, 3));
   switch (kind % 11) {
     case 0:
       return rayAlong(around, pointIn() - around);
@@ -263,8 +258,8 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
       return rayAlong(around, edgePoint(random.chance(0.3) ? 0.5 : random.uniform(0, 1)) - around);
     case 3: {
       const Double3 across = (vertex(j + 1) - vertex(j)).cross(n);
-      const double shift = size * std::pow(10.0, -random.uniform(6, 16)) *
-                           (random.chance(0.5) ? 1 : -1) / std::sqrt(across.lengthSquared());
+      const double small = size * std::pow(10.0, -random.uniform(6, 16));
+      const double shift = small * random.sign() / std::sqrt(across.lengthSquared());
       return rayAlong(around, edgePoint(random.uniform(0, 1)) + across * shift - around);
     }
     case 4: {
@@ -273,10 +268,12 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
       return rayAlong(head, random.direction());
     }
     case 5: {
-      Double3 head = c + random.direction() * (size * random.uniform(0, 2));
+      const Double3 toHead = random.direction();
+      Double3 head = c + toHead * (size * random.uniform(0, 2));
       if (random.chance(0.3)) head = head - n * n.dot(head - c);  // in the plane
       const double tilts[] = {0, 0x1p-41, 0x1p-40, 0x1p-39, 1e-10};
-      const double tilt = tilts[random.integer(0, 4)] * (random.chance(0.5) ? 1 : -1);
+      const double magnitude = tilts[random.integer(0, 4)];
+      const double tilt = magnitude * random.sign();
       return rayAlong(head, n.cross(random.direction()) + n * tilt);
     }
     case 6: {
@@ -292,9 +289,10 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
         }
       }
     }
-    case 7:
-      return rayAlong(random.inBox(Aabb(c - Double3(3 * size), c + Double3(3 * size))),
-                      random.direction());
+    case 7: {
+      const Double3 head = random.inBox(c - Double3(3 * size), c + Double3(3 * size));
+      return rayAlong(head, random.direction());
+    }
     case 8: {
       const Double3 head(std::round(around.x), std::round(around.y), std::round(around.z));
       const Double3 mid = edgePoint(0.5) * 2;
@@ -303,7 +301,8 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
       return rayAlong(head, target - head);
     }
     case 9: {
-      const Double3 head = c + random.direction() * (size * std::pow(10.0, random.uniform(2, 6)));
+      const Double3 toHead = random.direction();
+      const Double3 head = c + toHead * (size * std::pow(10.0, random.uniform(2, 6)));
       const Double3 target =
           random.chance(0.5) ? pointIn()
                              : vertex(j) + (vertex(j) - c) * std::pow(10.0, -random.uniform(9, 15));
@@ -319,8 +318,8 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
         return d.dot(cross) / std::sqrt(d.lengthSquared() * cross.lengthSquared());
       };
       const double probe = size * 1e-6;
-      const double shift = std::abs(0x1p-40 * probe / ratio(probe)) *
-                           (1 + random.uniform(-3e-4, 3e-4)) * (random.chance(0.5) ? 1 : -1);
+      const double jitter = 1 + random.uniform(-3e-4, 3e-4);
+      const double shift = std::abs(0x1p-40 * probe / ratio(probe)) * jitter * random.sign();
       return rayAlong(around, on + unit * shift - around);
     }
   }
@@ -331,10 +330,10 @@ std::optional<Ray> randomRay(Random& random, int kind, std::span<const Point> vs
 /// the plane (planeT > 0) but pass beside the shape.
 void expectStage3Roots(Simd simd) {
   const FlatScene scene = randomFlatScene(2024, 2700);
-  // Nearly all of them accepted: GCC 12 draws a scene of 2501 flat shapes from this seed, Clang
-  // 14 one of 2499 (they evaluate the arguments of a call that draws several numbers in
-  // opposite orders).
-  ASSERT_GT(scene.flat.size(), 2400u) << scene.rejected << " shapes refused by stage 2";
+  // Nearly all of them accepted: 2514 flat shapes from this seed on every compiler and standard
+  // library (the numbers of support/TestRandom.h, drawn one per statement), so a count that
+  // differs says the scene does, here or on another platform.
+  ASSERT_EQ(scene.flat.size(), 2514u) << scene.rejected << " shapes refused by stage 2";
   const FlatShapes flats(Primitives(std::span<const Geometry>(scene.shapes)), scene.flat, simd);
   ASSERT_EQ(flats.size(), scene.flat.size());
   EXPECT_EQ(flats.simd(), simd);
@@ -373,6 +372,8 @@ void expectStage3Roots(Simd simd) {
       }
     }
   }
+  ::testing::Test::RecordProperty("flatShapes", static_cast<int>(flats.size()));
+  ::testing::Test::RecordProperty("rays", checked);
   EXPECT_EQ(failures, 0) << "of " << checked << " rays";
   EXPECT_GT(checked, 130000);
   EXPECT_GT(hits, checked / 6);
@@ -494,12 +495,15 @@ TEST(FlatShapesTests, awayFromPlaneOnlyWherePlaneTIsNaN) {
     const Double3 q = random.inBox(box);
     const Double3 n = random.direction();
     const Double3 along = n.cross(random.direction());
-    double h = std::pow(10.0, random.uniform(-16, 2)) * (random.chance(0.5) ? 1 : -1);
+    double h = std::pow(10.0, random.uniform(-16, 2));
+    h *= random.sign();
     if (i % 10 == 0) h = 0;
     const Double3 head = q + along * random.uniform(0, 10) + n * h;
     Double3 dir = random.direction();
-    if (i % 3 == 0)
-      dir = along + n * (std::pow(10.0, -random.uniform(9, 16)) * (random.chance(0.5) ? 1 : -1));
+    if (i % 3 == 0) {
+      const double tilt = std::pow(10.0, -random.uniform(9, 16));
+      dir = along + n * (tilt * random.sign());
+    }
     if (dir.isZero()) continue;
     const Ray ray{Point(head), Vector(dir)};
     if (FlatShapes::awayFromPlane(q, n, ray)) {
@@ -669,9 +673,7 @@ TEST(FlatShapesTests, edgeNormalsAreUnitInPlaneAndInwards) {
     const double s = random.uniform(0.5, 5);
     if (i % 2 == 0) {
       try {
-        shapes.emplace_back(Triangle(Point(c + random.direction() * s),
-                                     Point(c + random.direction() * s),
-                                     Point(c + random.direction() * s)));
+        shapes.emplace_back(random.triangleAround(c, s));
       } catch (const std::invalid_argument&) {
       }
     } else {

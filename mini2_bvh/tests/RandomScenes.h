@@ -7,76 +7,70 @@
 // triangle meshes moved elsewhere, and copies of their triangles as shapes.
 // Rays: from outside towards the scene, from inside it, along the axes or parallel to a
 // coordinate plane, from the points where earlier rays hit, with infinite or finite tMax.
+// The numbers come from support/TestRandom.h, one draw per statement: the same scenes and rays
+// on every compiler and standard library.
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <random>
 #include <utility>
 #include <vector>
 
 #include "bvh/Aabb.h"
 #include "intersections/Geometries.h"
+#include "support/TestRandom.h"
 
 namespace rt::test {
 
-/// Numbers, points and directions from a seeded 64-bit Mersenne twister.
-class Random {
+/// The tests' portable numbers, points and directions, with boxes as Aabb.
+class Random : public TestRandom {
  public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(engine_);
+  using TestRandom::TestRandom;
+  using TestRandom::inBox;
+  Double3 inBox(const Aabb& box) noexcept { return inBox(box.lo, box.hi); }
+  /// A point with integer coordinates in box (whose bounds should be integers): x, y, then z.
+  Double3 gridPoint(const Aabb& box) noexcept {
+    const double x = integer(int(box.lo.x), int(box.hi.x));
+    const double y = integer(int(box.lo.y), int(box.hi.y));
+    const double z = integer(int(box.lo.z), int(box.hi.z));
+    return Double3(x, y, z);
   }
-  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine_); }
-  bool chance(double p) { return uniform(0, 1) < p; }
-
-  Double3 inBox(const Aabb& box) {
-    return Double3(uniform(box.lo.x, box.hi.x), uniform(box.lo.y, box.hi.y),
-                   uniform(box.lo.z, box.hi.z));
+  /// Three points c + s·direction(), drawn in that order: a triangle's corners around c.
+  std::vector<Point> cornersAround(const Double3& c, double s) {
+    std::vector<Point> corners;
+    for (int k = 0; k < 3; ++k) corners.emplace_back(c + direction() * s);
+    return corners;
   }
-  /// Uniform on the unit sphere (rejection from the cube).
-  Double3 direction() {
-    for (;;) {
-      const Double3 d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      const double l2 = d.lengthSquared();
-      if (l2 > 1e-4 && l2 <= 1) return d / std::sqrt(l2);
-    }
+  /// The triangle of cornersAround(c, s) (@throws std::invalid_argument as Triangle does).
+  Triangle triangleAround(const Double3& c, double s) {
+    const std::vector<Point> p = cornersAround(c, s);
+    return Triangle(p[0], p[1], p[2]);
   }
-
- private:
-  std::mt19937_64 engine_;
 };
 
 /// n spheres with centres uniform in box and radii uniform in [rMin, rMax].
 inline void addSpheres(Geometries& g, Random& random, std::uint32_t n, const Aabb& box, double rMin,
                        double rMax) {
-  for (std::uint32_t i = 0; i < n; ++i)
-    g.add(Sphere(Point(random.inBox(box)), random.uniform(rMin, rMax)));
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Point c(random.inBox(box));
+    g.add(Sphere(c, random.uniform(rMin, rMax)));
+  }
 }
 
 /// n shapes of every bounded kind, spread over box (whose bounds should be integers).
 inline void addMixedShapes(Geometries& g, Random& random, std::uint32_t n, const Aabb& box) {
-  auto gridPoint = [&] {
-    return Double3(random.integer(int(box.lo.x), int(box.hi.x)),
-                   random.integer(int(box.lo.y), int(box.hi.y)),
-                   random.integer(int(box.lo.z), int(box.hi.z)));
-  };
   for (std::uint32_t i = 0; i < n; ++i) {
     const Double3 c = random.inBox(box);
     switch (i % 5) {
       case 0:
         g.add(Sphere(Point(c), random.uniform(0.2, 3)));
         break;
-      case 1: {  // a triangle of size up to 6 around c
-        const double s = random.uniform(0.5, 3);
-        g.add(Triangle(Point(c + random.direction() * s), Point(c + random.direction() * s),
-                       Point(c + random.direction() * s)));
+      case 1:  // a triangle of size up to 6 around c
+        g.add(random.triangleAround(c, random.uniform(0.5, 3)));
         break;
-      }
       case 2: {  // an axis-aligned rectangle on integer coordinates (exactly flat)
-        const Double3 p = gridPoint();
+        const Double3 p = random.gridPoint(box);
         const double a = random.integer(1, 4), b = random.integer(1, 4);
         switch (random.integer(0, 2)) {
           case 0:
@@ -94,16 +88,18 @@ inline void addMixedShapes(Geometries& g, Random& random, std::uint32_t n, const
         break;
       }
       case 3: {  // a tilted rectangle p, p+u, p+u+v, p+v on integers: u·v = −abk + abk = 0
-        const Double3 p = gridPoint();
+        const Double3 p = random.gridPoint(box);
         const double a = random.integer(1, 3), b = random.integer(-2, 2);
         const double k = random.integer(-1, 1), h = random.integer(1, 2);
         const Double3 u(a, b, 0), v(-b * k, a * k, h);
         g.add(Polygon({Point(p), Point(p + u), Point(p + u + v), Point(p + v)}));
         break;
       }
-      default:
-        g.add(Cylinder(random.uniform(0.2, 2), Ray(Point(c), Vector(random.direction())),
-                       random.uniform(0.5, 5)));
+      default: {
+        const double radius = random.uniform(0.2, 2);
+        const Vector axis(random.direction());
+        g.add(Cylinder(radius, Ray(Point(c), axis), random.uniform(0.5, 5)));
+      }
     }
   }
 }
@@ -205,11 +201,11 @@ inline std::vector<Query> randomQueries(Random& random, std::uint32_t n, const A
         if (direction.lengthSquared() < 1e-6) direction = Double3(1, 1, 0);
         break;
       }
-      default:
-        origin = Double3(std::round(random.uniform(box.lo.x, box.hi.x)),
-                         std::round(random.uniform(box.lo.y, box.hi.y)),
-                         std::round(random.uniform(box.lo.z, box.hi.z)));
+      default: {
+        const Double3 p = random.inBox(box);
+        origin = Double3(std::round(p.x), std::round(p.y), std::round(p.z));
         direction = random.direction();
+      }
     }
     const double tMax = random.chance(1.0 / 3) ? random.uniform(0, diagonal) : INFINITE_DISTANCE;
     queries.push_back(Query{Ray(Point(origin), Vector(direction)), tMax});

@@ -100,9 +100,8 @@ TEST(SlabTests, raysAimedAtTheFacesNeverMiss) {
   test::Random random(11);
   int misses = 0, late = 0;
   for (int i = 0; i < 10000; ++i) {
-    const Double3 lo(random.uniform(-10, 10), random.uniform(-10, 10), random.uniform(-10, 10));
-    const Aabb box(lo,
-                   lo + Double3(random.uniform(0, 5), random.uniform(0, 5), random.uniform(0, 5)));
+    const Double3 lo = random.inCube(-10, 10);
+    const Aabb box(lo, lo + random.inCube(0, 5));
     Double3 target = random.inBox(box);
     const int axis = random.integer(0, 2);
     const bool upper = random.chance(0.5);
@@ -110,7 +109,8 @@ TEST(SlabTests, raysAimedAtTheFacesNeverMiss) {
      : axis == 1 ? target.y
                  : target.z) = component(upper ? box.hi : box.lo, axis);
     if (random.chance(0.2)) target = random.chance(0.5) ? box.lo : box.hi;  // a corner
-    const Double3 origin = target + random.direction() * random.uniform(0.1, 50);
+    const Double3 toOrigin = random.direction();
+    const Double3 origin = target + toOrigin * random.uniform(0.1, 50);
     if (origin.x == target.x && origin.y == target.y && origin.z == target.z) continue;
     const Ray ray(Point(origin), Vector(target - origin));
     double entry;

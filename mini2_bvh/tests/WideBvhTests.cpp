@@ -44,7 +44,8 @@ TEST(WideBvhTests, directedRoundings) {
   // floatAbove the smallest >= x, as the library's nextafter finds them
   test::Random random(31);
   for (int i = 0; i < 20000; ++i) {
-    const double x = random.uniform(-1, 1) * std::ldexp(1.0, random.integer(-160, 140));
+    const double mantissa = random.uniform(-1, 1);
+    const double x = mantissa * std::ldexp(1.0, random.integer(-160, 140));
     ASSERT_EQ(floatBelow(x), slowBelow(x)) << x;
     ASSERT_EQ(floatAbove(x), -slowBelow(-x)) << x;
     ASSERT_LE(floatBelow(x), x);
@@ -119,10 +120,8 @@ TEST(WideBvhTests, floatBoxTestIsConservative) {
   int doubleHits = 0, floatOnly = 0;
   for (int i = 0; i < 200000; ++i) {
     const double scale = std::ldexp(1.0, random.integer(-20, 40));
-    const Double3 c =
-        Double3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)) * scale;
-    const Double3 e =
-        Double3(random.uniform(0, 1), random.uniform(0, 1), random.uniform(0, 1)) * scale * 0.3;
+    const Double3 c = random.inCube(-1, 1) * scale;
+    const Double3 e = random.inCube(0, 1) * scale * 0.3;
     const FloatBox box = FloatBox::enclosing(Aabb(c - e, c + e));
     Double3 origin = random.inBox(Aabb(Double3(-2 * scale), Double3(2 * scale)));
     Double3 dir = random.direction();

@@ -20,7 +20,7 @@
 #include "intersections/Geometries.h"
 #include "intersections/Intersect.h"
 #include "intersections/Primitives.h"
-#include "primitives/Random.h"
+#include "support/TestRandom.h"
 
 namespace rt {
 namespace {
@@ -31,26 +31,10 @@ using Indices = TriangleMesh::Indices;
 /// True when a and b are the same doubles, component by component.
 bool sameBits(const Double3& a, const Double3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-/// Uniform numbers, points and directions of a RandomStream, one number after another.
-class Draw {
+/// Uniform numbers, points and directions: stream (x, y) of seed 15 (support/TestRandom.h).
+class Draw : public test::TestRandom {
  public:
-  Draw(std::uint32_t x, std::uint32_t y) : stream_(15, x, y, 0) {}
-  double uniform(double lo, double hi) { return lo + (hi - lo) * stream_.next(); }
-  Double3 inBox(const Double3& lo, const Double3& hi) {
-    const double x = uniform(lo.x, hi.x), y = uniform(lo.y, hi.y);
-    return Double3(x, y, uniform(lo.z, hi.z));
-  }
-  /// Uniform on the unit sphere (rejection from the cube).
-  Double3 direction() {
-    for (;;) {
-      const Double3 d = inBox(Double3(-1), Double3(1));
-      const double l2 = d.lengthSquared();
-      if (l2 > 1e-4 && l2 <= 1) return d / std::sqrt(l2);
-    }
-  }
-
- private:
-  RandomStream stream_;
+  Draw(std::uint32_t x, std::uint32_t y) : TestRandom(15, x, y) {}
 };
 
 /// 60 triangles over 24 random vertices in the box [-2, 2]^3, some of them of zero area (a
@@ -105,7 +89,8 @@ std::size_t expectSameRootsAsTriangles(const TriangleMesh& mesh, std::uint32_t s
     for (int k = 0; k < raysPerTriangle; ++k) {
       const double b1 = draw.uniform(-0.25, 1.25), b2 = draw.uniform(-0.25, 1.25);
       const Double3 target = c[0].xyz() * (1 - b1 - b2) + c[1].xyz() * b1 + c[2].xyz() * b2;
-      Double3 origin = target + draw.direction() * draw.uniform(0.5, 10);
+      const Double3 away = draw.direction();
+      Double3 origin = target + away * draw.uniform(0.5, 10);
       Double3 direction = target - origin;
       switch (k % 4) {
         case 1:  // from a corner, in any direction
@@ -261,9 +246,11 @@ TEST(MeshIntersectionTests, geometriesWithMeshesAnswerAsWithTriangleShapes) {
         origin = draw.inBox(lo, hi);
         direction = draw.direction();
         break;
-      default:  // from below, straight up through the floor and the teapot's bottom
-        origin = Double3(draw.uniform(-1.5, 1.5), draw.uniform(-1.5, 1.5), -2);
+      default: {  // from below, straight up through the floor and the teapot's bottom
+        const double x = draw.uniform(-1.5, 1.5);
+        origin = Double3(x, draw.uniform(-1.5, 1.5), -2);
         direction = Double3(0, 0, 1);
+      }
     }
     const double tMax = k % 4 == 3 ? draw.uniform(0, 15) : INFINITE_DISTANCE;
     const Ray ray{Point(origin), Vector(direction)};

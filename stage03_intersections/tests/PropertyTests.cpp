@@ -10,11 +10,11 @@
 #include <functional>
 #include <numbers>
 #include <optional>
-#include <random>
 #include <vector>
 
 #include "intersections/Geometries.h"
 #include "intersections/Intersect.h"
+#include "support/TestRandom.h"
 
 #include "ExpectHits.h"
 
@@ -23,27 +23,16 @@ namespace {
 
 constexpr int kRays = 1000;
 
-/// Uniform numbers, points and directions from a seeded std::mt19937.
-class Sampler {
+/// Uniform numbers, points and directions (support/TestRandom.h: the same on every compiler and
+/// standard library), as stage 1's points and vectors.
+class Sampler : public test::TestRandom {
  public:
-  explicit Sampler(std::mt19937::result_type seed) : gen_(seed) {}
-  double uniform(double lo, double hi) {
-    return std::uniform_real_distribution<double>(lo, hi)(gen_);
-  }
+  using TestRandom::TestRandom;
   Point inBox(const Point& lo, const Point& hi) {
-    return Point(uniform(lo.x(), hi.x()), uniform(lo.y(), hi.y()), uniform(lo.z(), hi.z()));
+    return Point(TestRandom::inBox(lo.xyz(), hi.xyz()));
   }
-  /// A direction uniform on the unit sphere (rejection from the cube).
-  Vector direction() {
-    for (;;) {
-      const Double3 d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-      const double l2 = d.lengthSquared();
-      if (l2 > 1e-4 && l2 <= 1) return Vector(d).normalized();
-    }
-  }
-
- private:
-  std::mt19937 gen_;
+  /// A direction uniform on the unit sphere.
+  Vector direction() { return Vector(TestRandom::direction()); }
 };
 
 /// A box of six outward-wound polygons.

@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 #include "geometries/Plane.h"
@@ -16,6 +15,7 @@
 #include "primitives/Ray.h"
 #include "primitives/Vector.h"
 #include "shadows/RayOffset.h"
+#include "support/TestRandom.h"
 
 namespace rt {
 namespace {
@@ -121,26 +121,28 @@ TEST(RayOffsetTests, shadowRange) {
 // the scale-aware offset never finds the surface it leaves at a tiny distance: a ray leaving a
 // plane away from it finds no hit at all; a ray entering a sphere finds only its far side.
 TEST(RayOffsetTests, noSelfHitAtAnyScale) {
-  std::mt19937_64 rng(20240706);
-  std::uniform_real_distribution<double> u(-1, 1);
+  test::TestRandom random(20240706);
+  const auto cube = [&random] { return Vector(random.inCube(-1, 1)); };  // x, y, z in [-1, 1)
   const RayOffset offset;
   int checked = 0;
   for (double scale = 1e-3; scale <= 1e7; scale *= 10) {
     for (int i = 0; i < 200; ++i) {
       // A tilted plane through a point far from the origin (large coordinates, large rounding).
-      const Point q(scale * (3 + u(rng)), scale * (2 + u(rng)), scale * (1 + u(rng)));
-      const Vector n = Vector(u(rng), u(rng), 1.5).normalized();
+      const Double3 a = random.inCube(-1, 1);
+      const Point q(scale * (3 + a.x), scale * (2 + a.y), scale * (1 + a.z));
+      const Double3 b = random.inCube(-1, 1);
+      const Vector n = Vector(b.x, b.y, 1.5).normalized();
       const Plane plane(q, n);
       // The eye at least 2 radii from q (outside the sphere below), aimed at a point of the
       // plane away from q, so that the hit point is not q itself but a rounded intersection.
-      const Point eye = q + n * (scale * 3) + Vector(u(rng), u(rng), u(rng)) * (scale * 0.5);
-      const Point target = inPlane(q, n, Vector(u(rng), u(rng), u(rng)) * scale);
+      const Point eye = q + n * (scale * 3) + cube() * (scale * 0.5);
+      const Point target = inPlane(q, n, cube() * scale);
       const Ray primary(eye, target - eye);
       const std::optional<double> t = closestHit(plane, primary);
       ASSERT_TRUE(t.has_value());
       const Point p = primary.point(*t);
       // Leave on the eye's side (a reflected or shadow ray): the plane must not be found again.
-      const Vector away = (n * 2 + Vector(u(rng), u(rng), u(rng))).normalized();
+      const Vector away = (n * 2 + cube()).normalized();
       EXPECT_FALSE(closestHit(plane, offset.ray(p, n, away)).has_value())
           << "scale " << scale << " plane " << i;
 
@@ -168,23 +170,25 @@ TEST(RayOffsetTests, noSelfHitAtAnyScale) {
 // against this in stage 3 itself: their solver drops a crossing within the rounding error of the
 // origin; the sphere's solver has no such guard.)
 TEST(RayOffsetTests, fixedTinyEpsilonAcneAtLargeScale) {
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
+  test::TestRandom random(7);
+  const auto cube = [&random] { return Vector(random.inCube(-1, 1)); };  // x, y, z in [-1, 1)
   const RayOffset tiny = RayOffset::fixed(1e-9);
   const RayOffset scaled;
   int acneFixed = 0, acneScaled = 0;
   const double scale = 1e8;
   for (int i = 0; i < 500; ++i) {
-    const Point c(scale * (1 + 0.1 * u(rng)), scale * (1 + 0.1 * u(rng)), scale);
+    const double x = random.uniform(-1, 1);
+    const Point c(scale * (1 + 0.1 * x), scale * (1 + 0.1 * random.uniform(-1, 1)), scale);
     const Sphere sphere(c, 1000);
-    const Point eye = c + Vector(u(rng), u(rng), 3) * 1000;
-    const Point target = c + Vector(u(rng), u(rng), u(rng)) * 500;
+    const double ex = random.uniform(-1, 1);
+    const Point eye = c + Vector(ex, random.uniform(-1, 1), 3) * 1000;
+    const Point target = c + cube() * 500;
     const Ray primary(eye, target - eye);
     const std::optional<double> t = closestHit(sphere, primary);
     ASSERT_TRUE(t.has_value());
     const Point p = primary.point(*t);
     const Vector n = sphere.normal(p);
-    const Vector away = (n * 2 + Vector(u(rng), u(rng), u(rng))).normalized();
+    const Vector away = (n * 2 + cube()).normalized();
     if (closestHit(sphere, tiny.ray(p, n, away))) ++acneFixed;
     if (closestHit(sphere, scaled.ray(p, n, away))) ++acneScaled;
   }

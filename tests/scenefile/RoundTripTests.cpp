@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <random>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 #include "scenefile/ModelFile.h"
 #include "scenefile/SceneFile.h"
 #include "shadows/CourseScenes.h"
+#include "support/TestRandom.h"
 
 namespace rt {
 namespace {
@@ -175,12 +175,11 @@ TEST(RoundTripTest, DirectionsComeBackExactly) {
   // EP02: arbitrary directions (fixed seed): planes, tubes, cylinders, directional and spot
   // lights all come back with the same bits, though a third of unit vectors change by an ulp
   // when normalised again.
-  std::mt19937_64 random(20240611);
-  std::uniform_real_distribution<double> coordinate(-10, 10);
+  test::TestRandom random(20240611);
   SceneDocument many = baseDocument();
   for (int i = 0; i < 300; ++i) {
-    const Vector d(coordinate(random), coordinate(random), coordinate(random));
-    const Point p(coordinate(random), coordinate(random), coordinate(random));
+    const Vector d(random.inCube(-10, 10));
+    const Point p(random.inCube(-10, 10));
     litScene(many).add(Plane(p, d));
     litScene(many).add(Tube(1, Ray(p, d)));
     litScene(many).add(Cylinder(1, Ray(p, d), 2));
