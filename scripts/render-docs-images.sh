@@ -17,8 +17,8 @@
 #    `IMAGE SCENE [RT_RENDER_OPTION]...`): the mini projects' scenes at their own sizes, an image
 #    with a --param, the galaxy with and without diffused glass. docs/images/IMAGE.png is
 #    `rt render SCENE` with that line's options only.
-# 3. The pictures of mini2_bvh's tree (bvh-top.png, bvh-leaves.png), drawn by mini2_bvh_picture,
-#    when the build has mini2_bvh.
+# 3. The pictures of mini2_bvh's trees (bvh-top.png, bvh-leaves.png, bvh-wide-root.png), drawn by
+#    mini2_bvh_picture, when the build has mini2_bvh.
 # A README link to an image of docs/images/ that does not exist is reported. --list prints what
 # would be rendered and renders nothing. Set RT_BUILD_DIR to build somewhere other than
 # build/release.
@@ -96,10 +96,12 @@ fi
 # 3. The BVH's boxes over the galaxy.
 if cmake --build "$build_dir" --target mini2_bvh_picture --parallel "$RT_JOBS" >/dev/null 2>&1; then
   if ((list_only)); then
-    echo "would draw: docs/images/bvh-top.png, docs/images/bvh-leaves.png (mini2_bvh_picture)"
+    echo "would draw: docs/images/bvh-top.png, docs/images/bvh-leaves.png," \
+         "docs/images/bvh-wide-root.png (mini2_bvh_picture)"
   else
     "$build_dir/bin/mini2_bvh_picture" docs/images/bvh-top.png --depth 3
     "$build_dir/bin/mini2_bvh_picture" docs/images/bvh-leaves.png
+    "$build_dir/bin/mini2_bvh_picture" docs/images/bvh-wide-root.png --wide --depth 0
   fi
 fi
 
