@@ -130,8 +130,8 @@ TEST(RayOffsetTests, noSelfHitAtAnyScale) {
       // A tilted plane through a point far from the origin (large coordinates, large rounding).
       const Double3 a = random.inCube(-1, 1);
       const Point q(scale * (3 + a.x), scale * (2 + a.y), scale * (1 + a.z));
-      const Double3 b = random.inCube(-1, 1);
-      const Vector n = Vector(b.x, b.y, 1.5).normalized();
+      const double nx = random.uniform(-1, 1);
+      const Vector n = Vector(nx, random.uniform(-1, 1), 1.5).normalized();
       const Plane plane(q, n);
       // The eye at least 2 radii from q (outside the sphere below), aimed at a point of the
       // plane away from q, so that the hit point is not q itself but a rounded intersection.
