@@ -20,7 +20,7 @@
 # with python3): the stages below a handout are the reference's files without their markers, the
 # same in every later handout, and the tests are the reference's, so each is compiled once. -O1
 # rather than -O0: it takes about a quarter more CPU to compile, but the sampled stages' tests
-# run ten times faster (mini1's DeterminismTests: 37 s at -O1, 9 minutes at -O0).
+# run ten times faster (mini1's DeterminismTests at its size then: 37 s at -O1, 9 minutes at -O0).
 # RT_HANDOUT_OPT sets another level (RT_HANDOUT_OPT=-O0). Everything goes under RT_HANDOUT_DIR
 # (default: a new temporary directory, removed when every check passed; kept, and printed, when
 # one failed). RT_JOBS sets the parallelism (default: the core count), RT_CCACHE=0 builds
