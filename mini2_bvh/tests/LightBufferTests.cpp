@@ -258,7 +258,8 @@ std::vector<ShadowRay> shadowRays(const LitScene& scene, const std::vector<doubl
       if (const auto* sphere = std::get_if<Sphere>(&g)) {
         if (random.chance(0.2)) {
           const Double3 out = random.direction();
-          const Point head(sphere->center().xyz() + out * (sphere->radius() * random.uniform(0, 0.9)));
+          const Point head(sphere->center().xyz() +
+                           out * (sphere->radius() * random.uniform(0, 0.9)));
           addShadowRay(rays, scene, k, head, Vector(random.direction()), r0[k]);
         }
       } else if (const auto* polygon = std::get_if<Polygon>(&g)) {
