@@ -34,8 +34,8 @@ class TestRandom {
   double unit() noexcept { return stream_.next(); }
   /// lo + (hi − lo)·unit(): in [lo, hi] (hi itself only by the rounding of the product).
   double uniform(double lo, double hi) noexcept { return lo + (hi - lo) * unit(); }
-  /// An integer in [lo, hi], each with probability 1/(hi − lo + 1) (lo <= hi, and the range
-  /// below 2^31: within a double's exact integers, unit()·range is below range).
+  /// An integer in [lo, hi], each with probability 1/(hi − lo + 1) to within 2^-52 (lo <= hi,
+  /// and the range below 2^31: within a double's exact integers, unit()·range is below range).
   int integer(int lo, int hi) noexcept {
     const double range = static_cast<double>(hi) - lo + 1;
     return lo + static_cast<int>(unit() * range);
