@@ -26,10 +26,14 @@
 #include <cmath>
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <mutex>
 #include <thread>
 #include <utility>
 #include <variant>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include "Concurrently.h"
 #include "bvh/BoundingBox.h"
@@ -43,18 +47,24 @@ namespace {
 struct BuildRecord {
   FloatBox box;
   std::uint32_t shape;
-  bool sphere;  ///< kept here so that making a leaf never reads the (large) shapes again
+  /// 1 for a sphere, else 0: kept here so that making a leaf never reads the (large) shapes
+  /// again. A whole word, so that the record has no padding: a copy (the partition's swaps) is
+  /// then two 16-byte moves, where a bool left 29 bytes to copy, which the compiler did through
+  /// overlapping moves on the stack that the processor cannot forward from one to the next.
+  std::uint32_t sphere;
 
   /// Left unset: the records' array is made at its size, and each build thread writes (and
   /// first touches) its own part of it; every record is written before it is read.
   BuildRecord() noexcept {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
   BuildRecord(const FloatBox& b, std::uint32_t s, bool isSphere) noexcept
-      : box(b), shape(s), sphere(isSphere) {}
+      : box(b), shape(s), sphere(isSphere ? 1 : 0) {}
 };
 static_assert(sizeof(BuildRecord) == 32, "a build record is 32 bytes");
+static_assert(sizeof(FloatBox) + 2 * sizeof(std::uint32_t) == sizeof(BuildRecord),
+              "a build record has no padding");
 
 /// What testing a record's shape costs the SAH, in sphere tests.
-double testCost(const BuildRecord& r) noexcept { return r.sphere ? 1.0 : Bvh::SHAPE_COST; }
+double testCost(const BuildRecord& r) noexcept { return r.sphere != 0 ? 1.0 : Bvh::SHAPE_COST; }
 
 /// A record's centroid on an axis: 0.5·lo + 0.5·hi (halved first, so no sum overflows). Every
 /// record's box is finite (see the constructor), so every centroid is.
@@ -97,8 +107,52 @@ struct Binning {
   int bin(float c) const noexcept { return static_cast<int>(std::min((c - lo) * scale, last)); }
 };
 
+/// A float box as the binning pass grows it: with SSE2, its bounds in two registers of four
+/// lanes (x, y, z and a fourth lane that is never read back), so that a union is two
+/// instructions; a minimum or maximum of floats is exact either way, so the box is the same as
+/// FloatBox::expand's.
+struct LaneBox {
+#if defined(__SSE2__)
+  __m128 lo, hi;
+
+  static LaneBox empty() noexcept {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    return {_mm_set1_ps(inf), _mm_set1_ps(-inf)};
+  }
+  /// A record's box. Its lo and hi are six consecutive floats: the lanes (lo0, lo1, lo2, hi0)
+  /// and (lo2, hi0, hi1, hi2), the second turned to (hi0, hi1, hi2, hi0), so that no lane holds
+  /// anything but the box's own bounds (the record's other fields are not floats).
+  static LaneBox of(const BuildRecord& r) noexcept {
+    const __m128 high = _mm_loadu_ps(&r.box.lo[2]);
+    return {_mm_loadu_ps(&r.box.lo[0]), _mm_shuffle_ps(high, high, _MM_SHUFFLE(1, 3, 2, 1))};
+  }
+  void expand(const LaneBox& b) noexcept {
+    lo = _mm_min_ps(lo, b.lo);
+    hi = _mm_max_ps(hi, b.hi);
+  }
+  /// Lanes 0 to 2 of centre (the record's centroid: 0.5·lo + 0.5·hi, as centroid() computes it).
+  __m128 centre() const noexcept {
+    const __m128 half = _mm_set1_ps(0.5f);
+    return _mm_add_ps(_mm_mul_ps(half, lo), _mm_mul_ps(half, hi));
+  }
+  FloatBox box() const noexcept {
+    alignas(16) std::array<float, 4> l, h;
+    _mm_store_ps(l.data(), lo);
+    _mm_store_ps(h.data(), hi);
+    return FloatBox{{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
+  }
+#else
+  FloatBox b;
+
+  static LaneBox empty() noexcept { return {FloatBox::empty()}; }
+  static LaneBox of(const BuildRecord& r) noexcept { return {r.box}; }
+  void expand(const LaneBox& other) noexcept { b.expand(other.b); }
+  FloatBox box() const noexcept { return b; }
+#endif
+};
+
 struct Bin {
-  FloatBox box;
+  LaneBox box;
   std::uint32_t count;
   std::uint32_t spheres;  ///< of count: the records of cost 1, the others cost SHAPE_COST
 
@@ -349,15 +403,35 @@ class Builder {
     // BEGIN SOLUTION: hint: sahSplit, bin the centroids, sweep for the cheapest border
     std::array<std::array<Bin, Bvh::BINS>, 3> bins;
     for (auto& axis : bins)
-      for (int b = 0; b < used; ++b) axis[b] = Bin{FloatBox::empty(), 0, 0};
+      for (int b = 0; b < used; ++b) axis[b] = Bin{LaneBox::empty(), 0, 0};
+#if defined(__SSE2__)
+    // A record's three bins at once, each lane computing Binning::bin's operations in float (the
+    // fourth lane: 0·c, bin 0, not read).
+    const __m128 binLo = _mm_setr_ps(binnings[0].lo, binnings[1].lo, binnings[2].lo, 0);
+    const __m128 binScale =
+        _mm_setr_ps(binnings[0].scale, binnings[1].scale, binnings[2].scale, 0);
+    const __m128 binLast = _mm_setr_ps(binnings[0].last, binnings[1].last, binnings[2].last, 0);
+#endif
     for (std::uint32_t i = begin; i < end; ++i) {
       const BuildRecord& r = records_[i];
-      const std::array<float, 3> c{centroid(r, 0), centroid(r, 1), centroid(r, 2)};
+      const LaneBox box = LaneBox::of(r);
+#if defined(__SSE2__)
+      alignas(16) std::array<std::int32_t, 4> index;
+      // (c − lo)·scale, its minimum with the last bin (minps keeps the first operand when it is
+      // the smaller, as std::min does unless both are equal), truncated as static_cast<int> does.
+      _mm_store_si128(reinterpret_cast<__m128i*>(index.data()),
+                      _mm_cvttps_epi32(_mm_min_ps(
+                          _mm_mul_ps(_mm_sub_ps(box.centre(), binLo), binScale), binLast)));
+#else
+      const std::array<int, 3> index{binnings[0].bin(centroid(r, 0)),
+                                     binnings[1].bin(centroid(r, 1)),
+                                     binnings[2].bin(centroid(r, 2))};
+#endif
       for (int a = 0; a < 3; ++a) {  // (an axis of scale 0 puts all in bin 0, unused)
-        Bin& bin = bins[a][binnings[a].bin(c[a])];
+        Bin& bin = bins[a][index[a]];
         ++bin.count;
-        bin.spheres += r.sphere ? 1 : 0;
-        bin.box.expand(r.box);
+        bin.spheres += r.sphere;
+        bin.box.expand(box);
       }
     }
     // The cheapest border. Costs are unnormalised (times SA(box)), so that a flat or huge box
@@ -367,21 +441,22 @@ class Builder {
     for (int a = 0; a < 3; ++a) {
       if (binnings[a].scale == 0) continue;
       std::array<double, Bvh::BINS> rightCost{};  // rightCost[b]: SA·cost of bins b..last
-      FloatBox right = FloatBox::empty();
+      LaneBox right = LaneBox::empty();
       double rightTests = 0;
       for (int b = used - 1; b > 0; --b) {
         rightTests += bins[a][b].cost();
         right.expand(bins[a][b].box);
-        if (bins[a][b - 1].count > 0) rightCost[b] = rightTests * right.widen().surfaceArea();
+        if (bins[a][b - 1].count > 0)
+          rightCost[b] = rightTests * right.box().widen().surfaceArea();
       }
-      FloatBox left = FloatBox::empty();
+      LaneBox left = LaneBox::empty();
       double leftTests = 0;
       for (int b = 0; b < used - 1; ++b) {
         leftTests += bins[a][b].cost();
         left.expand(bins[a][b].box);
         if (bins[a][b].count == 0) continue;  // border b splits as border b - 1 does
         // Both sides are non-empty: bin 0 holds the lowest centroid, the last bin the highest.
-        const double cost = leftTests * left.widen().surfaceArea() + rightCost[b + 1];
+        const double cost = leftTests * left.box().widen().surfaceArea() + rightCost[b + 1];
         if (bestAxis < 0 || cost < bestCost) {
           bestCost = cost;
           bestAxis = a;
@@ -398,8 +473,10 @@ class Builder {
     // The children's boxes are the unions of their bins' boxes; their centroids' boxes are
     // gathered while the records are partitioned.
     Split split{false, bestAxis, 0, {}, {}};
-    for (int b = 0; b < used; ++b)
-      (b <= bestBorder ? split.left : split.right).box.expand(bins[bestAxis][b].box);
+    std::array<LaneBox, 2> sides{LaneBox::empty(), LaneBox::empty()};  // left, right
+    for (int b = 0; b < used; ++b) sides[b <= bestBorder ? 0 : 1].expand(bins[bestAxis][b].box);
+    split.left.box = sides[0].box();
+    split.right.box = sides[1].box();
     const Binning& binning = binnings[bestAxis];
     split.mid = partition(begin, end, split, bestAxis,
                           [&](float c) { return binning.bin(c) <= bestBorder; });
@@ -418,6 +495,28 @@ class Builder {
   std::uint32_t partition(std::uint32_t begin, std::uint32_t end, Split& split, int axis,
                           const IsLeft& isLeft) {
     std::uint32_t border = begin;
+#if defined(__SSE2__)
+    // The two sides' centroid boxes in registers: each record's centroid joins both, replaced
+    // by the empty box's bound on the side it does not go to (a mask, not a branch).
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    const __m128 plus = _mm_set1_ps(inf), minus = _mm_set1_ps(-inf);
+    std::array<LaneBox, 2> sides{LaneBox::empty(), LaneBox::empty()};  // left, right
+    for (std::uint32_t i = begin; i < end; ++i) {
+      const BuildRecord& r = records_[i];
+      const __m128 c = LaneBox::of(r).centre();
+      const bool left = isLeft(centroid(r, axis));  // lane `axis` of c, computed alike
+      const __m128 toLeft = _mm_castsi128_ps(_mm_set1_epi32(left ? -1 : 0));
+      const auto pick = [](__m128 mask, __m128 yes, __m128 no) {
+        return _mm_or_ps(_mm_and_ps(mask, yes), _mm_andnot_ps(mask, no));
+      };
+      sides[0].expand({pick(toLeft, c, plus), pick(toLeft, c, minus)});
+      sides[1].expand({pick(toLeft, plus, c), pick(toLeft, minus, c)});
+      std::swap(records_[i], records_[border]);
+      border += left ? 1 : 0;
+    }
+    split.left.centroids.expand(sides[0].box());
+    split.right.centroids.expand(sides[1].box());
+#else
     for (std::uint32_t i = begin; i < end; ++i) {
       const BuildRecord& r = records_[i];
       const std::array<float, 3> c{centroid(r, 0), centroid(r, 1), centroid(r, 2)};
@@ -426,6 +525,7 @@ class Builder {
       std::swap(records_[i], records_[border]);
       border += left ? 1 : 0;
     }
+#endif
     return border;
   }
 
@@ -463,7 +563,7 @@ class Builder {
                 int depth) {
     const auto spheresEnd =
         static_cast<std::uint32_t>(std::partition(records_.begin() + begin, records_.begin() + end,
-                                                  [](const BuildRecord& r) { return r.sphere; }) -
+                                                  [](const BuildRecord& r) { return r.sphere != 0; }) -
                                    records_.begin());
     if (spheresEnd == begin || spheresEnd == end) {
       nodes_[index] = leaf(box, begin, end, spheresEnd == end);
