@@ -198,6 +198,9 @@ class Builder {
   int build(int threads, const Bounds& all) {
     const auto n = static_cast<std::uint32_t>(records_.size());
     if (threads <= 1 || n < 2 * PARALLEL_GRAIN_MIN) {
+      // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The
+      // reservation is address space: only the nodes written take memory.
+      reserveHuge(nodes_, 2 * static_cast<std::size_t>(n) - 1);
       buildNode(0, n, 0, all);
       return maxDepth_;
     }
@@ -208,6 +211,11 @@ class Builder {
     // The records are done with (the tasks hold every leaf's primitives): freed before the
     // tasks' arrays are copied into the tree, so that the two do not add up at the peak.
     std::vector<BuildRecord>().swap(records_);
+    // The tree's nodes are now counted (the skeleton's interior ones and the tasks'): the array
+    // at its size, its pages made at once.
+    std::size_t count = skeleton.size() - tasks.size();
+    for (const Task& t : tasks) count += t.nodes.size();
+    reserveHugeWritten(nodes_, count);
     emit(0, skeleton, tasks);
     for (const Task& t : tasks) maxDepth_ = std::max(maxDepth_, t.maxDepth);
     return maxDepth_;
@@ -315,8 +323,15 @@ class Builder {
   /// Builds a task's subtree into its arrays.
   void buildTask(Task& t) const {
     // Address space for the most nodes a range can make (2n - 1, and two more per leaf of both
-    // kinds): only the nodes written take memory, and no array is copied growing.
-    t.nodes.reserve(3 * static_cast<std::size_t>(t.end - t.begin));
+    // kinds): only the nodes written take memory, and no array is copied growing. On small
+    // pages, so that the part reserved beyond the written nodes stays address space where the
+    // system gives huge pages unasked (HugePages.h); the primitives' arrays at their sizes.
+    const std::size_t n = t.end - t.begin;
+    reserveSmall(t.nodes, 3 * n);
+    std::size_t spheres = 0;
+    for (std::uint32_t i = t.begin; i < t.end; ++i) spheres += records_[i].sphere;
+    t.spheres.reserve(spheres);
+    t.others.reserve(n - spheres);
     Builder b(records_, t.nodes, t.spheres, t.others, sahMaxDepth_);
     b.buildNode(t.begin, t.end, t.depth, t.bounds);
     t.maxDepth = b.maxDepth_;
@@ -561,10 +576,10 @@ class Builder {
   /// its kind; a range with both kinds becomes an interior node over a leaf of each.
   void makeLeaf(std::uint32_t index, const FloatBox& box, std::uint32_t begin, std::uint32_t end,
                 int depth) {
-    const auto spheresEnd =
-        static_cast<std::uint32_t>(std::partition(records_.begin() + begin, records_.begin() + end,
-                                                  [](const BuildRecord& r) { return r.sphere != 0; }) -
-                                   records_.begin());
+    const auto isSphere = [](const BuildRecord& r) { return r.sphere != 0; };
+    const auto spheresEnd = static_cast<std::uint32_t>(
+        std::partition(records_.begin() + begin, records_.begin() + end, isSphere) -
+        records_.begin());
     if (spheresEnd == begin || spheresEnd == end) {
       nodes_[index] = leaf(box, begin, end, spheresEnd == end);
       maxDepth_ = std::max(maxDepth_, depth);
@@ -653,7 +668,7 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   const std::size_t count = primitives.size();
   const int chunks = build::chunkCount(count, threads);
   std::vector<BuildRecord> records;
-  reserveHuge(records, count);  // 32 MiB for 10^6 stars (HugePages.h)
+  reserveHugeWritten(records, count);  // 32 MiB for 10^6 stars (HugePages.h)
   records.resize(count);
   std::vector<RecordChunk> made(static_cast<std::size_t>(chunks));
   build::concurrently(chunks, [&](int k) {
@@ -681,12 +696,11 @@ Bvh::Bvh(Primitives primitives, BvhBuildOptions options, SpheresLater) : primiti
   records.resize(written);
   if (records.empty()) return;
 
-  // A binary tree over n leaves-worth of primitives has at most 2n − 1 nodes. The reservation
-  // is address space: only the nodes written take memory. The binary BVH's constructor returns
-  // the rest (shrink_to_fit, a copy); the wide BVH frees the whole array once it has collapsed
-  // it, with no copy.
-  reserveHuge(nodes_, 2 * records.size() - 1);
-  reserveHuge(sphereShapes_, sphereCount);
+  // The node array is reserved by the build: at its size when several threads build, for the
+  // most nodes the tree could have on one; the binary BVH's constructor then returns the rest
+  // (shrink_to_fit, a copy, or nothing to do), the wide BVH frees the whole array once it has
+  // collapsed it.
+  reserveHugeWritten(sphereShapes_, sphereCount);
   otherShapes_.reserve(records.size() - sphereCount);
   depth_ = Builder(records, nodes_, sphereShapes_, otherShapes_, options.sahMaxDepth)
                .build(threads, all);
@@ -716,7 +730,7 @@ void Bvh::makeCompactSpheres(int threads) {
   // per thread (build::chunkCount).
   const std::span<const Geometry> shapes = primitives_.shapes();
   const std::size_t count = sphereShapes_.size();
-  reserveHuge(spheres_, count);
+  reserveHugeWritten(spheres_, count);
   spheres_.assign(count, CompactSphere{});
   const int chunks = build::chunkCount(count, threads);
   build::concurrently(chunks, [&](int k) {

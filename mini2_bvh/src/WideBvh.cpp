@@ -243,8 +243,8 @@ WideBvh::WideBvh(Primitives primitives, BvhBuildOptions options)
     throw std::length_error("WideBvh: " + std::to_string(leafCount) +
                             " leaves, more than the wide nodes can number (2^31 - 1)");
   Collapser collapser(binary_.nodes_, nodes_, leaves_);
-  reserveHuge(nodes_, collapser.count(0));  // filled whole (HugePages.h)
-  reserveHuge(leaves_, leafCount);
+  reserveHugeWritten(nodes_, collapser.count(0));  // filled whole (HugePages.h)
+  reserveHugeWritten(leaves_, leafCount);
   collapser.collapse(0, 0);
   depth_ = collapser.depth();
   std::vector<BvhNode>().swap(binary_.nodes_);

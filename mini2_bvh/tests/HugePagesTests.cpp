@@ -1,5 +1,6 @@
 // mini2: the build's large arrays advised for 2 MiB pages (HugePages.h): which part of an array
-// is advised, and that the advice, where the system takes it, marks exactly that part.
+// is advised, and that the advice, where the system takes it, marks exactly that part; and the
+// parallel build's subtree arrays advised for small pages.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -9,6 +10,10 @@
 #include <vector>
 
 #include "bvh/HugePages.h"
+
+#if defined(__linux__)
+#include <unistd.h>
+#endif
 
 namespace rt {
 namespace {
@@ -94,6 +99,62 @@ TEST(HugePagesTests, theAdvisedPagesAreMarkedOnLinux) {
   EXPECT_NE(mappingFlags(range.first).find(" hg"), std::string::npos) << mappingFlags(range.first);
   big.assign(8 * MIB, 'x');
   EXPECT_EQ(big[8 * MIB - 1], 'x');
+}
+
+/// The resident KiB of the mappings that overlap [lo, hi) in /proc/self/smaps.
+long residentKiB(std::uintptr_t lo, std::uintptr_t hi) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool overlaps = false;
+  long kib = 0;
+  while (std::getline(smaps, line)) {
+    std::uintptr_t begin = 0, end = 0;
+    char dash = 0;
+    std::istringstream head(line);
+    if (head >> std::hex >> begin >> dash >> end && dash == '-') {
+      overlaps = begin < hi && lo < end;
+      continue;
+    }
+    if (overlaps && line.rfind("Rss:", 0) == 0) kib += std::stol(line.substr(4));
+  }
+  return kib;
+}
+
+TEST(HugePagesTests, theWrittenArraysPagesAreMadeAtOnceOnLinux) {
+  // TC01: 16 MiB reserved to be written whole: before any element is written, its pages are
+  // resident (where the kernel has MADV_POPULATE_WRITE), and the array keeps its elements
+  std::vector<std::uint64_t> v{5, 6};
+  reserveHugeWritten(v, 2 * MIB);  // 16 MiB
+  ASSERT_GE(v.capacity(), 2 * MIB);
+  EXPECT_EQ(v, (std::vector<std::uint64_t>{5, 6}));
+  const auto lo = reinterpret_cast<std::uintptr_t>(v.data());
+  const long resident = residentKiB(lo, lo + 16 * MIB);  // before anything else touches them
+  if (!populatePages(v.data(), 2 * MIB * sizeof(std::uint64_t)))  // again: nothing changes
+    GTEST_SKIP() << "this kernel cannot populate pages (MADV_POPULATE_WRITE, Linux 5.14)";
+  EXPECT_GE(resident, 16 * 1024);
+  EXPECT_EQ(v, (std::vector<std::uint64_t>{5, 6}));
+  // TC11: nothing to make
+  EXPECT_FALSE(populatePages(v.data(), 0));
+}
+
+TEST(HugePagesTests, theSmallPagesAdviceMarksTheWholeArrayOnLinux) {
+  // TC01: 8 MiB reserved for small pages: the mapping that starts at the array's first whole 4
+  // KiB page carries the flag "nh" (no huge pages), the array keeps its elements and is usable
+  std::vector<int> v{1, 2, 3};
+  reserveSmall(v, 2 * MIB);  // 8 MiB of ints
+  ASSERT_EQ(v.capacity(), 2 * MIB);
+  EXPECT_EQ(v, (std::vector<int>{1, 2, 3}));
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  const auto data = reinterpret_cast<std::uintptr_t>(v.data());
+  const std::uintptr_t first = (data + page - 1) & ~(page - 1);
+  if (!adviseSmallPages(v.data(), v.capacity() * sizeof(int)))  // again: the same advice
+    GTEST_SKIP() << "this kernel has no transparent huge pages (madvise refused the advice)";
+  EXPECT_NE(mappingFlags(first).find(" nh"), std::string::npos) << mappingFlags(first);
+  v.assign(2 * MIB, 7);
+  EXPECT_EQ(v[2 * MIB - 1], 7);
+  // TC11: nothing to advise in less than one whole page
+  const std::vector<char> small(100);
+  EXPECT_FALSE(adviseSmallPages(small.data(), small.size()));
 }
 #endif
 
