@@ -90,8 +90,9 @@ for image in "${images[@]}"; do
     if ! cmp -s "$out/$name.0.png" "$out/$name.$k.png"; then
       figures="$("${builds[0]}" compare "$out/$name.0.png" "$out/$name.$k.png" 2>&1 |
         tail -n 2 | tr '\n' ' ' || true)"
-      line="DIFFERENT in ${builds[$k]}: $figures"
-      different=$((different + 1))
+      figures="${figures% }"
+      [[ "$line" == same ]] && line="DIFFERENT" && different=$((different + 1))
+      line+=" in ${builds[$k]}: $figures"
     fi
   done
   printf '%-34s %s\n' "$name" "$line"
