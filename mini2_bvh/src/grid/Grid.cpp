@@ -67,8 +67,9 @@ bool isFinite(const FloatBox& b) noexcept {
 }  // namespace
 
 Grid::Grid(Primitives primitives) : primitives_(primitives) {
-  // The large arrays on 2 MiB pages where the system offers them (HugePages.h); the two lists
-  // reserved for every primitive (address space: only what is written takes memory).
+  // The large arrays on 2 MiB pages where the system offers them (HugePages.h), those written
+  // whole with their pages made at once; the two lists reserved for every primitive (address
+  // space: only what is written takes memory).
   std::vector<std::uint32_t> bounded;
   std::vector<Aabb> boxes;
   reserveHuge(bounded, primitives.size());
@@ -107,7 +108,7 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
     return static_cast<int>(u);
   };
   std::vector<CellRange> ranges;
-  reserveHuge(ranges, bounded.size());
+  reserveHugeWritten(ranges, bounded.size());
   ranges.resize(bounded.size());
   for (std::size_t s = 0; s < bounded.size(); ++s)
     for (int a = 0; a < 3; ++a) {
@@ -123,7 +124,7 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
            static_cast<std::size_t>(n_[0]) *
                (static_cast<std::size_t>(y) + static_cast<std::size_t>(n_[1]) * z);
   };
-  reserveHuge(offsets_, cells + 1);
+  reserveHugeWritten(offsets_, cells + 1);
   offsets_.assign(cells + 1, 0);
   std::uint64_t total = 0;
   for (const CellRange& r : ranges) {
@@ -137,10 +138,10 @@ Grid::Grid(Primitives primitives) : primitives_(primitives) {
                               std::to_string(bounded.size()) + " shapes");
   }
   for (std::size_t c = 0; c < cells; ++c) offsets_[c + 1] += offsets_[c];
-  reserveHuge(entries_, total);
+  reserveHugeWritten(entries_, total);
   entries_.resize(total);
   std::vector<std::uint32_t> next;
-  reserveHuge(next, cells);
+  reserveHugeWritten(next, cells);
   next.assign(offsets_.begin(), offsets_.end() - 1);
   for (std::size_t s = 0; s < bounded.size(); ++s) {
     const CellRange& r = ranges[s];
