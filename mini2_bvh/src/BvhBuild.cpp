@@ -515,15 +515,15 @@ class Builder {
     // by the empty box's bound on the side it does not go to (a mask, not a branch).
     constexpr float inf = std::numeric_limits<float>::infinity();
     const __m128 plus = _mm_set1_ps(inf), minus = _mm_set1_ps(-inf);
+    const auto pick = [](__m128 mask, __m128 yes, __m128 no) {
+      return _mm_or_ps(_mm_and_ps(mask, yes), _mm_andnot_ps(mask, no));
+    };
     std::array<LaneBox, 2> sides{LaneBox::empty(), LaneBox::empty()};  // left, right
     for (std::uint32_t i = begin; i < end; ++i) {
       const BuildRecord& r = records_[i];
       const __m128 c = LaneBox::of(r).centre();
       const bool left = isLeft(centroid(r, axis));  // lane `axis` of c, computed alike
       const __m128 toLeft = _mm_castsi128_ps(_mm_set1_epi32(left ? -1 : 0));
-      const auto pick = [](__m128 mask, __m128 yes, __m128 no) {
-        return _mm_or_ps(_mm_and_ps(mask, yes), _mm_andnot_ps(mask, no));
-      };
       sides[0].expand({pick(toLeft, c, plus), pick(toLeft, c, minus)});
       sides[1].expand({pick(toLeft, plus, c), pick(toLeft, minus, c)});
       std::swap(records_[i], records_[border]);

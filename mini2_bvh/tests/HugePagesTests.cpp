@@ -69,22 +69,42 @@ TEST(HugePagesTests, nothingToAdviseInASmallArray) {
 }
 
 #if defined(__linux__)
-/// The VmFlags of the mapping that starts at address `start` in /proc/self/smaps, or "".
-std::string mappingFlags(std::uintptr_t start) {
+/// Calls visit(lo, hi, line) for each line of /proc/self/smaps that describes the mapping
+/// [lo, hi) (its fields after the header line).
+template <typename Visit>
+void forEachMappingLine(const Visit& visit) {
   std::ifstream smaps("/proc/self/smaps");
   std::string line;
-  bool inside = false;
+  std::uintptr_t lo = 0, hi = 0;
   while (std::getline(smaps, line)) {
-    std::uintptr_t lo = 0, hi = 0;
+    std::uintptr_t begin = 0, end = 0;
     char dash = 0;
     std::istringstream head(line);
-    if (head >> std::hex >> lo >> dash >> hi && dash == '-') {
-      inside = lo == start;
+    if (head >> std::hex >> begin >> dash >> end && dash == '-') {
+      lo = begin;
+      hi = end;
       continue;
     }
-    if (inside && line.rfind("VmFlags:", 0) == 0) return line;
+    visit(lo, hi, line);
   }
-  return "";
+}
+
+/// The VmFlags of the mapping that starts at address `start` in /proc/self/smaps, or "".
+std::string mappingFlags(std::uintptr_t start) {
+  std::string flags;
+  forEachMappingLine([&](std::uintptr_t lo, std::uintptr_t, const std::string& line) {
+    if (lo == start && line.rfind("VmFlags:", 0) == 0) flags = line;
+  });
+  return flags;
+}
+
+/// The resident KiB of the mappings that overlap [lo, hi) in /proc/self/smaps.
+long residentKiB(std::uintptr_t lo, std::uintptr_t hi) {
+  long kib = 0;
+  forEachMappingLine([&](std::uintptr_t begin, std::uintptr_t end, const std::string& line) {
+    if (begin < hi && lo < end && line.rfind("Rss:", 0) == 0) kib += std::stol(line.substr(4));
+  });
+  return kib;
 }
 
 TEST(HugePagesTests, theAdvisedPagesAreMarkedOnLinux) {
@@ -99,25 +119,6 @@ TEST(HugePagesTests, theAdvisedPagesAreMarkedOnLinux) {
   EXPECT_NE(mappingFlags(range.first).find(" hg"), std::string::npos) << mappingFlags(range.first);
   big.assign(8 * MIB, 'x');
   EXPECT_EQ(big[8 * MIB - 1], 'x');
-}
-
-/// The resident KiB of the mappings that overlap [lo, hi) in /proc/self/smaps.
-long residentKiB(std::uintptr_t lo, std::uintptr_t hi) {
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line;
-  bool overlaps = false;
-  long kib = 0;
-  while (std::getline(smaps, line)) {
-    std::uintptr_t begin = 0, end = 0;
-    char dash = 0;
-    std::istringstream head(line);
-    if (head >> std::hex >> begin >> dash >> end && dash == '-') {
-      overlaps = begin < hi && lo < end;
-      continue;
-    }
-    if (overlaps && line.rfind("Rss:", 0) == 0) kib += std::stol(line.substr(4));
-  }
-  return kib;
 }
 
 TEST(HugePagesTests, theWrittenArraysPagesAreMadeAtOnceOnLinux) {
