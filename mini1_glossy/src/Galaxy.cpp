@@ -91,7 +91,8 @@ GalaxySetup galaxy(const GalaxyParams& p) {
   const std::uint32_t lightBlue = s.addAppearance(Color(80, 255, 230), starMaterial);
   const std::uint32_t nearWhite = s.addAppearance(Color(200, 250, 255), starMaterial);
   const double starRadius = 0.05 * std::sqrt(50.0 / m);
-  const double step = m > 1 ? 49.0 / (m - 1) : 0;  // i' = step·i runs over the reference report's 0..49
+  // i' = step·i runs over the reference report's 0..49
+  const double step = m > 1 ? 49.0 / (m - 1) : 0;
   for (int arm = 0; arm < p.arms; ++arm) {
     const double offset = 2 * std::numbers::pi * arm / p.arms;
     const bool sunArm = arm % 7 == 4;

@@ -46,8 +46,8 @@ TEST(GalaxyTests, theSeedsLayout) {
     EXPECT_NO_THROW((void)v.camera.builder().build()) << v.name;
   }
   EXPECT_EQ((std::set<std::string>{"main", "above", "inside", "side"}), names);
-  // TC04: the glass blurs both secondary rays with the reference report's beam (N 10, distance 12, radius
-  // 0.2): exactly one row of the table has beams
+  // TC04: the glass blurs both secondary rays with the reference report's beam (N 10, distance 12,
+  // radius 0.2): exactly one row of the table has beams
   int blurred = 0;
   for (const Appearance& a : s.appearances)
     if (a.material.reflectedBeam.isBeam() || a.material.refractedBeam.isBeam()) {
@@ -62,9 +62,9 @@ TEST(GalaxyTests, theSeedsLayout) {
 TEST(GalaxyTests, everyStarIsWithinTheSpiralsReach) {
   // TC01: every sphere is within the outermost arm's radius of the galaxy's centre (4,8,4):
   // 1.7·e^(0.25·0.15·49) plus the largest jitter in the disc (0.2·⌊49/8⌋/2 = 0.6 in x and in z)
-  // and off it (0.1), plus its own radius; and above the pedestal (y > 4). (As in the Java course project, the
-  // outermost stars of the arms pointing to −x reach a little past the glass wall at x = −6.5:
-  // the box is not centred on the galaxy in x.)
+  // and off it (0.1), plus its own radius; and above the pedestal (y > 4). (As in the Java course
+  // project, the outermost stars of the arms pointing to −x reach a little past the glass wall at x
+  // = −6.5: the box is not centred on the galaxy in x.)
   const LitScene s = galaxy().scene;
   const double reach = 1.7 * std::exp(0.25 * 0.15 * 49) + std::sqrt(2 * 0.6 * 0.6) + 0.1;
   int count = 0;

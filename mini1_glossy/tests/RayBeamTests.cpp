@@ -29,8 +29,8 @@ TEST(FrameTests, orthonormalForEveryDirection) {
   // ============ Equivalence Partitions Tests ==============
   // TC01: a general direction: u, v, w unit, orthogonal, right-handed (u × v = w)
   // =============== Boundary Values Tests ==================
-  // TC11..TC16: the six axes, ±Y included (the reference report's frame failed for −Y), and a direction
-  // just off −Z (where the formula's s + w.z is smallest)
+  // TC11..TC16: the six axes, ±Y included (the reference report's frame failed for −Y), and a
+  // direction just off −Z (where the formula's s + w.z is smallest)
   const Double3 dirs[] = {Vector(1, 2, 3).normalized().xyz(),
                           Double3(0, 1, 0),
                           Double3(0, -1, 0),
@@ -52,8 +52,8 @@ TEST(FrameTests, orthonormalForEveryDirection) {
 
 TEST(RayBeamTests, cellCount) {
   // ============ Equivalence Partitions Tests ==============
-  // TC01: the cells whose centres are inside the inscribed circle, ≈ π/4·N²: 80 for the reference report's
-  // N = 10 (the reference report's grid, not cell-centred, kept 79), 21 for 5, 316 for 20
+  // TC01: the cells whose centres are inside the inscribed circle, ≈ π/4·N²: 80 for the reference
+  // report's N = 10 (the reference report's grid, not cell-centred, kept 79), 21 for 5, 316 for 20
   EXPECT_EQ(80, beamCellCount(10));
   EXPECT_EQ(21, beamCellCount(5));
   EXPECT_EQ(316, beamCellCount(20));

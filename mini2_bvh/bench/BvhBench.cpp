@@ -171,9 +171,9 @@ void randomScenes(const std::vector<std::uint32_t>& sizes) {
 
 // ---- The course's "glassed galaxy" (mini1's galaxy(), course-catalogue.md §6) ----
 
-/// The galaxy's shapes, of about `stars` stars (0: the reference report's 50 per arm): the whole scene (the
-/// floor, the pedestal, the glass box and its frame, the stars), or its spheres alone, where
-/// every ray that meets no star crosses the whole galaxy.
+/// The galaxy's shapes, of about `stars` stars (0: the reference report's 50 per arm): the whole
+/// scene (the floor, the pedestal, the glass box and its frame, the stars), or its spheres alone,
+/// where every ray that meets no star crosses the whole galaxy.
 Geometries galaxyShapes(const GalaxySetup& g, bool whole) {
   if (whole) return g.scene.geometries;
   Geometries spheres;

@@ -3,22 +3,22 @@
 //   build/release/bin/mini2_render_bench [--no-scaling] [--stars 1000,10000,100000,1000000]
 //                                        [--threads N] [--repeat R] [--tile S]
 //
-// 1. Thread scaling: the reference report's galaxy (mini1's galaxy()) rendered by the beams tracer through the
-//    BVH, one camera ray per pixel, on 1 thread and on N threads (default 2) alternately, R times
-//    each (default 5), so that both see the same load on a shared machine. It prints the medians
-//    of the wall time and of the rays per second (every ray: camera, reflected and refracted,
-//    shadow), the process's CPU seconds per wall second (how many cores the render really got),
-//    the speed-up (the ratio of the median wall times), the rays per CPU second (the same on 1
-//    and N threads when the threads do not slow each other down), and whether the two images
-//    are the same bits. Then the load balance, which the machine's load cannot blur: every
-//    tile's cost measured alone, and the pool's schedule replayed with them (tileBalance).
-//    Without diffusion at the reference report's 1280 x 720; with it (the glass's beams of 10 x 10 rays) at
+// 1. Thread scaling: the reference report's galaxy (mini1's galaxy()) rendered by the beams tracer
+//    through the BVH, one camera ray per pixel, on 1 thread and on N threads (default 2)
+//    alternately, R times each (default 5), so that both see the same load on a shared machine. It
+//    prints the medians of the wall time and of the rays per second (every ray: camera, reflected
+//    and refracted, shadow), the process's CPU seconds per wall second (how many cores the render
+//    really got), the speed-up (the ratio of the median wall times), the rays per CPU second (the
+//    same on 1 and N threads when the threads do not slow each other down), and whether the two
+//    images are the same bits. Then the load balance, which the machine's load cannot blur: every
+//    tile's cost measured alone, and the pool's schedule replayed with them (tileBalance). Without
+//    diffusion at the reference report's 1280 x 720; with it (the glass's beams of 10 x 10 rays) at
 //    256 x 144.
 // 2. Stars: galaxies of n stars (GalaxyParams::stars), without diffusion, seen at 400 x 400 (the
-//    middle of the reference report's view): the generation time of the scene and the build time and size of
-//    its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall time on 1
-//    and N threads (medians of R renders, alternately), and the peak resident size of a process
-//    that did only that (each galaxy is measured in a child process of its own:
+//    middle of the reference report's view): the generation time of the scene and the build time
+//    and size of its BVH (this thread's CPU time), the render's CPU time on 1 thread and its wall
+//    time on 1 and N threads (medians of R renders, alternately), and the peak resident size of a
+//    process that did only that (each galaxy is measured in a child process of its own:
 //    benchmark/Scaling.h, which rt bench --scaling uses too).
 // A timing is never a test: this prints figures, it asserts nothing.
 

@@ -423,8 +423,7 @@ class Builder {
     // A record's three bins at once, each lane computing Binning::bin's operations in float (the
     // fourth lane: 0·c, bin 0, not read).
     const __m128 binLo = _mm_setr_ps(binnings[0].lo, binnings[1].lo, binnings[2].lo, 0);
-    const __m128 binScale =
-        _mm_setr_ps(binnings[0].scale, binnings[1].scale, binnings[2].scale, 0);
+    const __m128 binScale = _mm_setr_ps(binnings[0].scale, binnings[1].scale, binnings[2].scale, 0);
     const __m128 binLast = _mm_setr_ps(binnings[0].last, binnings[1].last, binnings[2].last, 0);
 #endif
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -461,8 +460,7 @@ class Builder {
       for (int b = used - 1; b > 0; --b) {
         rightTests += bins[a][b].cost();
         right.expand(bins[a][b].box);
-        if (bins[a][b - 1].count > 0)
-          rightCost[b] = rightTests * right.box().widen().surfaceArea();
+        if (bins[a][b - 1].count > 0) rightCost[b] = rightTests * right.box().widen().surfaceArea();
       }
       LaneBox left = LaneBox::empty();
       double leftTests = 0;

@@ -57,7 +57,8 @@ TEST(AccelerationTests, unknownNamesAreRefusedByName) {
       ADD_FAILURE() << "accepted '" << name << "'";
     } catch (const std::invalid_argument& e) {
       EXPECT_EQ(std::string(e.what()), "makeAcceleration: unknown acceleration '" +
-                                           std::string(name) + "' (known: none, cbr, bvh, bvh4, grid)");
+                                           std::string(name) +
+                                           "' (known: none, cbr, bvh, bvh4, grid)");
     }
   }
   for (std::string_view name : ACCELERATION_NAMES) EXPECT_TRUE(isAccelerationName(name));

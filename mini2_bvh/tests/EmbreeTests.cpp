@@ -31,14 +31,14 @@ namespace {
 /// other so that no ray of the grid below is near a tie.
 Geometries smallScene() {
   Geometries g;
-  g.add(Sphere(Point(0, 0, -10), 1.5));                                               // 0
-  g.add(Triangle(Point(3, -1, -8), Point(6, -1, -8), Point(4.5, 2, -8)));             // 1
+  g.add(Sphere(Point(0, 0, -10), 1.5));                                                        // 0
+  g.add(Triangle(Point(3, -1, -8), Point(6, -1, -8), Point(4.5, 2, -8)));                      // 1
   g.add(Polygon({Point(-6, -1, -9), Point(-3, -1, -9), Point(-3, 2, -9), Point(-6, 2, -9)}));  // 2
   g.add(Polygon({Point(-1, 3, -7), Point(1, 3, -7), Point(1.6, 4.5, -7), Point(0, 5.6, -7),
-                 Point(-1.6, 4.5, -7)}));                                              // 3
-  g.add(Cylinder(1, Ray(Point(0, -5, -9), Vector(0, 0, 1)), 2));                       // 4
-  g.add(Plane(Point(0, 0, -20), Vector(0, 0, 1)));                                     // 5
-  g.add(Tube(0.3, Ray(Point(-5.5, 0, -4), Vector(0, 1, 0))));                          // 6
+                 Point(-1.6, 4.5, -7)}));                         // 3
+  g.add(Cylinder(1, Ray(Point(0, -5, -9), Vector(0, 0, 1)), 2));  // 4
+  g.add(Plane(Point(0, 0, -20), Vector(0, 0, 1)));                // 5
+  g.add(Tube(0.3, Ray(Point(-5.5, 0, -4), Vector(0, 1, 0))));     // 6
   return g;
 }
 
@@ -54,7 +54,7 @@ std::vector<Ray> gridRays() {
 std::uint64_t bits(double t) { return std::bit_cast<std::uint64_t>(t); }
 
 std::multiset<std::pair<std::uint32_t, std::uint64_t>> everyHit(const Intersectable& s,
-                                                                 const Ray& ray, double tMax) {
+                                                                const Ray& ray, double tMax) {
   std::multiset<std::pair<std::uint32_t, std::uint64_t>> hits;
   s.forEachHit(ray, tMax, [&](const Hit& h) {
     hits.insert({h.geometry, bits(h.t)});

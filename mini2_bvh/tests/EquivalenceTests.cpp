@@ -1,8 +1,9 @@
-// mini2: the CBR, the BVH, the wide BVH and the grid answer exactly as the linear Geometries over the same
-// shapes: closestHit returns the same t (compared with ==) and the same index, forEachHit visits
-// the same multiset of (t, index) hits and stops when told. Random scenes and rays with fixed
-// seeds; each query is also repeated with tMax exactly at its closest hit (the inclusive bound) and
-// relaunched from that hit point. Triangle meshes' triangles are primitives like the shapes.
+// mini2: the CBR, the BVH, the wide BVH and the grid answer exactly as the linear Geometries over
+// the same shapes: closestHit returns the same t (compared with ==) and the same index, forEachHit
+// visits the same multiset of (t, index) hits and stops when told. Random scenes and rays with
+// fixed seeds; each query is also repeated with tMax exactly at its closest hit (the inclusive
+// bound) and relaunched from that hit point. Triangle meshes' triangles are primitives like the
+// shapes.
 #include <gtest/gtest.h>
 
 #include <algorithm>

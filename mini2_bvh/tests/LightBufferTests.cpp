@@ -707,9 +707,7 @@ LitScene shadedScene(std::uint64_t seed) {
   for (int row = 0; row < 24; ++row) {
     Material m;
     m.kD = Double3(0.5);
-    m.kT = row % 4 == 0   ? Double3(0)
-           : row % 8 == 1 ? Double3(1)
-                          : random.inCube(0.1, 0.95);
+    m.kT = row % 4 == 0 ? Double3(0) : row % 8 == 1 ? Double3(1) : random.inCube(0.1, 0.95);
     scene.addAppearance(Color(10, 10, 10), m);
   }
   for (std::uint32_t i = 0; i < shapes.size(); ++i)

@@ -26,8 +26,8 @@ namespace rt::test {
 /// The tests' portable numbers, points and directions, with boxes as Aabb.
 class Random : public TestRandom {
  public:
-  using TestRandom::TestRandom;
   using TestRandom::inBox;
+  using TestRandom::TestRandom;
   Double3 inBox(const Aabb& box) noexcept { return inBox(box.lo, box.hi); }
   /// A point with integer coordinates in box (whose bounds should be integers): x, y, then z.
   Double3 gridPoint(const Aabb& box) noexcept {

@@ -32,8 +32,7 @@ TEST(ColorTests, constructor) {
   expectColor(Color(300, 20, 20), 300, 20, 20);
   expectColor(Color(35, 120, 280), 35, 120, 280);
   // TC03: a negative component is rejected, naming the class and the value
-  EXPECT_THAT([] { Color(-1, 0, 0); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("Color")));
+  EXPECT_THAT([] { Color(-1, 0, 0); }, ThrowsMessage<std::invalid_argument>(HasSubstr("Color")));
   EXPECT_THAT([] { Color(0, 0, -5); }, ThrowsMessage<std::invalid_argument>(HasSubstr("-5")));
   EXPECT_THROW(Color(Double3(1, -2, 3)), std::invalid_argument);
   // TC04: a non-finite component is rejected

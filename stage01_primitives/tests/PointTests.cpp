@@ -59,9 +59,8 @@ TEST(PointTests, subtractPoint) {
   // =============== Boundary Values Tests ==================
   // TC11: a point minus itself would be the zero vector: throws, naming the operation and points
   const Point p(1, 2, 5);
-  EXPECT_THAT([&] { (void)(p - p); },
-              ThrowsMessage<std::invalid_argument>(
-                  AllOf(HasSubstr("Point subtraction"), HasSubstr("(1,2,5)"))));
+  EXPECT_THAT([&] { (void)(p - p); }, ThrowsMessage<std::invalid_argument>(AllOf(
+                                          HasSubstr("Point subtraction"), HasSubstr("(1,2,5)"))));
   // TC12: points closer than the zero threshold are the same point: throws
   EXPECT_THROW((void)(Point(1, 2, 5) - Point(1, 2, 5 + 1e-13)), std::invalid_argument);
 }

@@ -39,8 +39,7 @@ TEST(CylinderTests, constructor) {
               ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr("radius"), HasSubstr("-1"))));
   // TC04: NaN and infinite height or radius throw
   EXPECT_THROW(Cylinder(1, kZAxis, std::nan("")), std::invalid_argument);
-  EXPECT_THROW(Cylinder(1, kZAxis, std::numeric_limits<double>::infinity()),
-               std::invalid_argument);
+  EXPECT_THROW(Cylinder(1, kZAxis, std::numeric_limits<double>::infinity()), std::invalid_argument);
   EXPECT_THROW(Cylinder(std::nan(""), kZAxis, 2), std::invalid_argument);
   // =============== Boundary Values Tests ==================
   // TC11: height zero throws

@@ -47,21 +47,30 @@ TEST(PolygonTests, constructor) {
   // TC01: a correct convex quadrangle with vertices in order
   EXPECT_NO_THROW(Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 1, 1)}));
   // TC02: wrong vertex order (the boundary crosses itself)
-  EXPECT_THAT([] { Polygon({Point(0, 0, 1), Point(0, 1, 0), Point(1, 0, 0), Point(-1, 1, 1)}); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr(kOrder)));
+  EXPECT_THAT(
+      [] {
+        Polygon({Point(0, 0, 1), Point(0, 1, 0), Point(1, 0, 0), Point(-1, 1, 1)});
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr(kOrder)));
   // TC03: the 4th vertex is not in the plane of the first three
-  EXPECT_THAT([] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 2, 2)}); },
-              ThrowsMessage<std::invalid_argument>(
-                  AllOf(HasSubstr(kNotPlanar), HasSubstr("(0,2,2)"))));
+  EXPECT_THAT(
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 2, 2)});
+      },
+      ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr(kNotPlanar), HasSubstr("(0,2,2)"))));
   // TC04: the course's "concave" quadrangle: its 4th vertex (0.5,0.25,0.5) is in fact off the
   // plane x+y+z=1 of the first three (0.5+0.25+0.5 = 1.25), so that is the violation reported
   EXPECT_THAT(
-      [] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0.5, 0.25, 0.5)}); },
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0.5, 0.25, 0.5)});
+      },
       ThrowsMessage<std::invalid_argument>(HasSubstr(kNotPlanar)));
   // TC05: a really concave quadrangle: the 4th vertex (0.25,0.25,0.5) is coplanar and inside
   // the triangle of the first three
   EXPECT_THAT(
-      [] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0.25, 0.25, 0.5)}); },
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0.25, 0.25, 0.5)});
+      },
       ThrowsMessage<std::invalid_argument>(HasSubstr(kConcave)));
   // TC06: a convex pentagon, and a triangle given as a polygon
   EXPECT_NO_THROW(
@@ -81,35 +90,44 @@ TEST(PolygonTests, constructor) {
     EXPECT_THAT(messageOf(star), HasSubstr(kOrder));
   }
   // TC09: concave "arrow" pentagon in the plane z=3
-  EXPECT_THAT(messageOf({Point(0, 0, 3), Point(4, 0, 3), Point(4, 4, 3), Point(2, 1, 3),
-                         Point(0, 4, 3)}),
-              AllOf(HasSubstr(kConcave), HasSubstr("(2,1,3)")));
+  EXPECT_THAT(
+      messageOf({Point(0, 0, 3), Point(4, 0, 3), Point(4, 4, 3), Point(2, 1, 3), Point(0, 4, 3)}),
+      AllOf(HasSubstr(kConcave), HasSubstr("(2,1,3)")));
 
   // =============== Boundary Values Tests ==================
   // TC10: the 4th vertex (0,0.5,0.5) lies on the edge between its neighbours (0,1,0),(0,0,1)
   EXPECT_THAT(
-      [] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0.5, 0.5)}); },
-      ThrowsMessage<std::invalid_argument>(
-          AllOf(HasSubstr(kOnLine), HasSubstr("(0,0.5,0.5)"))));
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0.5, 0.5)});
+      },
+      ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr(kOnLine), HasSubstr("(0,0.5,0.5)"))));
   // TC11: the last vertex equals the first
-  EXPECT_THAT([] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)}); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr(kCoincide)));
+  EXPECT_THAT(
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)});
+      },
+      ThrowsMessage<std::invalid_argument>(HasSubstr(kCoincide)));
   // TC12: two consecutive co-located vertices
-  EXPECT_THAT([] { Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 1, 0)}); },
-              ThrowsMessage<std::invalid_argument>(
-                  AllOf(HasSubstr(kCoincide), HasSubstr("(0,1,0)"))));
+  EXPECT_THAT(
+      [] {
+        Polygon({Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(0, 1, 0)});
+      },
+      ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr(kCoincide), HasSubstr("(0,1,0)"))));
   // TC13: two vertices, and none, are fewer than 3; the message gives the count
-  EXPECT_THAT([] { Polygon({Point(0, 0, 0), Point(1, 0, 0)}); },
-              ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr(kFewer), HasSubstr("2"))));
+  EXPECT_THAT(
+      [] {
+        Polygon({Point(0, 0, 0), Point(1, 0, 0)});
+      },
+      ThrowsMessage<std::invalid_argument>(AllOf(HasSubstr(kFewer), HasSubstr("2"))));
   EXPECT_THAT([] { Polygon(std::vector<Point>{}); },
               ThrowsMessage<std::invalid_argument>(HasSubstr(kFewer)));
   // TC14: the first three vertices collinear (the 2nd on the line of its neighbours)
   EXPECT_THAT(messageOf({Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(1, 1, 0)}),
               AllOf(HasSubstr(kOnLine), HasSubstr("(1,0,0)")));
   // TC15: a later vertex (1,2,0) on the line of its neighbours (2,2,0),(0,2,0)
-  EXPECT_THAT(messageOf({Point(0, 0, 0), Point(2, 0, 0), Point(2, 2, 0), Point(1, 2, 0),
-                         Point(0, 2, 0)}),
-              AllOf(HasSubstr(kOnLine), HasSubstr("(1,2,0)")));
+  EXPECT_THAT(
+      messageOf({Point(0, 0, 0), Point(2, 0, 0), Point(2, 2, 0), Point(1, 2, 0), Point(0, 2, 0)}),
+      AllOf(HasSubstr(kOnLine), HasSubstr("(1,2,0)")));
   // TC16: a 4th vertex off the plane by 1e-6 is rejected, by 1e-14 (rounding noise) accepted
   EXPECT_THAT(messageOf({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 1e-6)}),
               HasSubstr(kNotPlanar));
@@ -148,8 +166,7 @@ TEST(PolygonTests, eachViolationHasItsOwnMessage) {
 
 TEST(PolygonTests, normal) {
   // TC01: the course's quad: unit normal orthogonal to every edge
-  const std::vector<Point> pts = {Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0),
-                                  Point(-1, 1, 1)};
+  const std::vector<Point> pts = {Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0), Point(-1, 1, 1)};
   const Polygon poly(pts);
   const Vector n = poly.normal(Point(0, 0, 1));
   EXPECT_NEAR(n.length(), 1.0, 1e-12);

@@ -46,7 +46,7 @@ Vector Geometries::normalAt(std::uint32_t primitive, const Point& p) const {
 std::optional<Hit> Geometries::closestHit(const Ray& ray, double tMax,
                                           QueryCounts* counts) const noexcept {
   NearestHit nearest(tMax);
-  // BEGIN SOLUTION: hint: Geometries::closestHit, offer each shape's roots: the smallest (t, index) within tMax wins (HitRules.h)
+  // BEGIN SOLUTION: hint: Geometries::closestHit, the smallest (t, index) within tMax (HitRules.h)
   for (std::uint32_t i = 0; i < shapes_.size(); ++i)
     nearest.offer(intersectRoots(shapes_[i], ray), i);
   if (counts != nullptr) counts->shapeTests += shapes_.size();
@@ -64,7 +64,7 @@ bool Geometries::forEachHit(const Ray& ray, double tMax, HitVisitor visit,
                             QueryCounts* counts) const {
   std::uint32_t tested = 0;
   bool complete = true;
-  // BEGIN SOLUTION: hint: Geometries::forEachHit, visit each shape's hits within tMax until visit says false
+  // BEGIN SOLUTION: hint: Geometries::forEachHit, each hit within tMax until visit says false
   for (std::uint32_t i = 0; i < shapes_.size() && complete; ++i) {
     ++tested;
     complete = visitHits(intersectRoots(shapes_[i], ray), i, tMax, visit);

@@ -34,14 +34,14 @@ TEST(CylinderIntersectionTests, equivalencePartitionsFromOutside) {
   EXPECT_TRUE(hits(kCylinder, Ray(Point(-0.5, 0, -1), Vector(1, 0, 4)),
                    {Point(-0.25, 0, 0), Point(0.25, 0, 2)}));
   // TC02: through the bottom cap and the side: (s, 0, -1+2s) meets z=0 at x=0.5, x=1 at z=1
-  EXPECT_TRUE(hits(kCylinder, Ray(Point(0, 0, -1), Vector(1, 0, 2)),
-                   {Point(0.5, 0, 0), Point(1, 0, 1)}));
+  EXPECT_TRUE(
+      hits(kCylinder, Ray(Point(0, 0, -1), Vector(1, 0, 2)), {Point(0.5, 0, 0), Point(1, 0, 1)}));
   // TC03: through the side and the top cap: (2-s, 0, s) meets x=1 at z=1, z=2 at x=0
-  EXPECT_TRUE(hits(kCylinder, Ray(Point(2, 0, 0), Vector(-1, 0, 1)),
-                   {Point(1, 0, 1), Point(0, 0, 2)}));
+  EXPECT_TRUE(
+      hits(kCylinder, Ray(Point(2, 0, 0), Vector(-1, 0, 1)), {Point(1, 0, 1), Point(0, 0, 2)}));
   // TC04: through the side twice, perpendicular to the axis
-  EXPECT_TRUE(hits(kCylinder, Ray(Point(-2, 0, 1), Vector(1, 0, 0)),
-                   {Point(-1, 0, 1), Point(1, 0, 1)}));
+  EXPECT_TRUE(
+      hits(kCylinder, Ray(Point(-2, 0, 1), Vector(1, 0, 0)), {Point(-1, 0, 1), Point(1, 0, 1)}));
   // TC05: through the side twice, oblique: (-2+4s, 0, 0.5+s) meets x=-1 at z=0.75, x=1 at 1.25
   EXPECT_TRUE(hits(kCylinder, Ray(Point(-2, 0, 0.5), Vector(4, 0, 1)),
                    {Point(-1, 0, 0.75), Point(1, 0, 1.25)}));
@@ -70,8 +70,8 @@ TEST(CylinderIntersectionTests, parallelToAxis) {
   EXPECT_TRUE(hits(kCylinder, Ray(Point(0.5, 0, -1), Vector(0, 0, 1)),
                    {Point(0.5, 0, 0), Point(0.5, 0, 2)}));
   // TC14: on the axis, through both base centres (2 points)
-  EXPECT_TRUE(hits(kCylinder, Ray(Point(0, 0, -1), Vector(0, 0, 1)),
-                   {Point(0, 0, 0), Point(0, 0, 2)}));
+  EXPECT_TRUE(
+      hits(kCylinder, Ray(Point(0, 0, -1), Vector(0, 0, 1)), {Point(0, 0, 0), Point(0, 0, 2)}));
   // TC15: inside, from above going down (2 points, top first)
   EXPECT_TRUE(hits(kCylinder, Ray(Point(0, 0.5, 5), Vector(0, 0, -1)),
                    {Point(0, 0.5, 2), Point(0, 0.5, 0)}));
@@ -102,8 +102,8 @@ TEST(CylinderIntersectionTests, boundaryTouching) {
 TEST(CylinderIntersectionTests, boundaryThroughRims) {
   // TC26: entering through the top rim and leaving through the bottom rim:
   // (2-s, 0, 3-s) is at (1,0,2) for s=1 and at (-1,0,0) for s=3; each met once
-  EXPECT_TRUE(hits(kCylinder, Ray(Point(2, 0, 3), Vector(-1, 0, -1)),
-                   {Point(1, 0, 2), Point(-1, 0, 0)}));
+  EXPECT_TRUE(
+      hits(kCylinder, Ray(Point(2, 0, 3), Vector(-1, 0, -1)), {Point(1, 0, 2), Point(-1, 0, 0)}));
   // TC27: starting on the top rim going in: leaves through the opposite bottom rim (1 point)
   EXPECT_TRUE(hits(kCylinder, Ray(Point(1, 0, 2), Vector(-1, 0, -1)), {Point(-1, 0, 0)}));
   // TC28: from inside, out through the top rim (1 point)

@@ -47,14 +47,14 @@ inline ::testing::AssertionResult compareHits(const Ray& ray, const std::vector<
   if (expected.empty() != !closest.has_value()) {
     return ::testing::AssertionFailure()
            << "closestHit: expected " << (expected.empty() ? "no hit" : "a hit") << ", got "
-           << (closest ? "t = " + std::to_string(*closest) : std::string("none")) << " for "
-           << ray;
+           << (closest ? "t = " + std::to_string(*closest) : std::string("none")) << " for " << ray;
   }
   if (closest) {
     const double expectedT = ray.head().distance(expected.front());
-    if (std::abs(*closest - expectedT) > kTolerance || !near(ray.point(*closest), expected.front())) {
-      return ::testing::AssertionFailure() << "closestHit: expected t = " << expectedT << ", got "
-                                           << *closest << " for " << ray;
+    if (std::abs(*closest - expectedT) > kTolerance ||
+        !near(ray.point(*closest), expected.front())) {
+      return ::testing::AssertionFailure()
+             << "closestHit: expected t = " << expectedT << ", got " << *closest << " for " << ray;
     }
   }
   return ::testing::AssertionSuccess();

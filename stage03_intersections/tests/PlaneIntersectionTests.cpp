@@ -20,8 +20,8 @@ TEST(PlaneIntersectionTests, equivalencePartitions) {
   EXPECT_TRUE(hits(kPlane, Ray(Point(1, 0, 1), Vector(1, 0, 1)), {}));
   // TC03: a plane given by three points, crossed from above
   const Plane tilted(Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
-  EXPECT_TRUE(hits(tilted, Ray(Point(1, 1, 1), Vector(-1, -1, -1)),
-                   {Point(1.0 / 3, 1.0 / 3, 1.0 / 3)}));
+  EXPECT_TRUE(
+      hits(tilted, Ray(Point(1, 1, 1), Vector(-1, -1, -1)), {Point(1.0 / 3, 1.0 / 3, 1.0 / 3)}));
 }
 
 TEST(PlaneIntersectionTests, boundaryParallel) {

@@ -102,7 +102,8 @@ int checkRelaunches(const FindAll& findAll, const FindClosest& closest, const Ra
                                   points.end());
     const std::vector<Point> found = findAll(again);
     bool same = found.size() == rest.size();
-    for (std::size_t k = 0; same && k < found.size(); ++k) same = test::near(found[k], rest[k], 1e-7);
+    for (std::size_t k = 0; same && k < found.size(); ++k)
+      same = test::near(found[k], rest[k], 1e-7);
     if (!same) {
       ADD_FAILURE() << "relaunched from hit " << i << " " << points[i] << " of " << ray
                     << ": expected " << test::describe(rest) << ", got " << test::describe(found);
@@ -178,8 +179,8 @@ TEST(PropertyTests, cylinderHitOnceFromInside) {
     const double phi = sampler.uniform(0, 2 * std::numbers::pi);
     const Point p(base.xyz() + axis.xyz() * s + e1.xyz() * (rho * std::cos(phi)) +
                   e2.xyz() * (rho * std::sin(phi)));
-    if (!hitsOnceFromInside(findAllOf(cylinder), closestOf(cylinder),
-                            Ray(p, sampler.direction()), onSurface))
+    if (!hitsOnceFromInside(findAllOf(cylinder), closestOf(cylinder), Ray(p, sampler.direction()),
+                            onSurface))
       return;
   }
 }
@@ -233,22 +234,21 @@ TEST(PropertyTests, polygonBoxHitOnceFromInside) {
 TEST(PropertyTests, relaunchSphere) {
   // TC01: rays crossing a sphere (2 hits) or starting inside it (1 hit)
   const Sphere sphere(Point(0.5, -0.5, 1), 1.5);
-  relaunchProperty(findAllOf(sphere), closestOf(sphere), 1, Point(-1, -2, -0.5),
-                   Point(2, 1, 2.5), 1000);
+  relaunchProperty(findAllOf(sphere), closestOf(sphere), 1, Point(-1, -2, -0.5), Point(2, 1, 2.5),
+                   1000);
 }
 
 TEST(PropertyTests, relaunchPlane) {
   // TC01: rays crossing a tilted plane
   const Plane plane(Point(0, 0, 0.3), Vector(1, 2, 3));
-  relaunchProperty(findAllOf(plane), closestOf(plane), 2, Point(-2, -2, -2), Point(2, 2, 2),
-                   500);
+  relaunchProperty(findAllOf(plane), closestOf(plane), 2, Point(-2, -2, -2), Point(2, 2, 2), 500);
 }
 
 TEST(PropertyTests, relaunchTriangle) {
   // TC01: rays aimed at a triangle's neighbourhood
   const Triangle triangle(Point(-1, -1, 0.5), Point(2, 0, -0.5), Point(0, 2, 1));
-  relaunchProperty(findAllOf(triangle), closestOf(triangle), 3, Point(-1, -1, -0.5),
-                   Point(2, 2, 1), 250);
+  relaunchProperty(findAllOf(triangle), closestOf(triangle), 3, Point(-1, -1, -0.5), Point(2, 2, 1),
+                   250);
 }
 
 TEST(PropertyTests, relaunchPolygon) {
@@ -275,8 +275,7 @@ TEST(PropertyTests, relaunchCylinder) {
 TEST(PropertyTests, relaunchPolygonBox) {
   // TC01: rays crossing a box of six polygons (a Geometries)
   const Geometries g = box(Point(-1, 0, -0.5), Point(2, 1.5, 3));
-  relaunchProperty(findAllOf(g), closestOf(g), 7, Point(-1.5, -0.5, -1), Point(2.5, 2, 3.5),
-                   1000);
+  relaunchProperty(findAllOf(g), closestOf(g), 7, Point(-1.5, -0.5, -1), Point(2.5, 2, 3.5), 1000);
 }
 
 }  // namespace

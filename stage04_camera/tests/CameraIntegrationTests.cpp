@@ -1,5 +1,5 @@
-// Camera-geometry integration (the Java course's camera stage): a 3x3 view plane of 3x3 pixels at distance 1;
-// the intersections of the 9 pixel rays with one shape are counted with
+// Camera-geometry integration (the Java course's camera stage): a 3x3 view plane of 3x3 pixels at
+// distance 1; the intersections of the 9 pixel rays with one shape are counted with
 // Geometries::findIntersections and compared with the course's counts.
 
 #include <gtest/gtest.h>

@@ -63,9 +63,10 @@ void LitScene::validate() const {
     }
   }
   if (meshAppearance.size() != geometries.meshes().size()) {
-    throw std::logic_error("LitScene: " + std::to_string(geometries.meshes().size()) +
-                           " meshes but " + std::to_string(meshAppearance.size()) +
-                           " mesh appearance indices; every mesh needs one (use LitScene::addMesh)");
+    throw std::logic_error(
+        "LitScene: " + std::to_string(geometries.meshes().size()) + " meshes but " +
+        std::to_string(meshAppearance.size()) +
+        " mesh appearance indices; every mesh needs one (use LitScene::addMesh)");
   }
   for (std::size_t m = 0; m < meshAppearance.size(); ++m) {
     if (meshAppearance[m] >= appearances.size()) {

@@ -68,8 +68,7 @@ Color WhittedTracer::globalEffects(const HitContext& h, int level, const Double3
   if (m.ior == 1) {
     const Color refracted =
         secondaryEffect(h, refractStraight(h.v), REFRACTED, level, k, m.kT, ctx);
-    return refracted +
-           secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR, ctx);
+    return refracted + secondaryEffect(h, reflect(h.v, h.normal), REFLECTED, level, k, m.kR, ctx);
   }
   const Refraction refraction = refract(h.v, h.normal, m.ior);
   const double r = refraction.reflectance;

@@ -191,11 +191,11 @@ TEST(RtAnimate, FramesAreSingleRendersAndFrameKAloneIsTheSameBytes) {
 
 TEST(RtAnimate, APathThroughViewsStartsAndEndsOnThem) {
   const std::string dir = freshDirectory("animate-views");
-  const test::RtResult r = runRt({"animate", "galaxy", "--through", "main,above", "--frames",
-                                  "3", "--width", "40", "-o", dir + "/f", "-s"});
+  const test::RtResult r = runRt({"animate", "galaxy", "--through", "main,above", "--frames", "3",
+                                  "--width", "40", "-o", dir + "/f", "-s"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  ASSERT_EQ(runRt({"render", "galaxy", "--view", "above", "--width", "40", "-o",
-                   dir + "/above.png", "-s"})
+  ASSERT_EQ(runRt({"render", "galaxy", "--view", "above", "--width", "40", "-o", dir + "/above.png",
+                   "-s"})
                 .exitCode,
             0);
   EXPECT_EQ(readFile(dir + "/f/frame-0002.png"), readFile(dir + "/above.png"));
@@ -203,8 +203,8 @@ TEST(RtAnimate, APathThroughViewsStartsAndEndsOnThem) {
 
 TEST(RtAnimate, RefusesAPathItCannotMakeBeforeAnyFrame) {
   const std::string dir = freshDirectory("animate-refusals");
-  const test::RtResult unknown = runRt({"animate", "galaxy", "--through", "main,abuve",
-                                        "--frames", "3", "-o", dir + "/f"});
+  const test::RtResult unknown =
+      runRt({"animate", "galaxy", "--through", "main,abuve", "--frames", "3", "-o", dir + "/f"});
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.err.find("rt: --through: the scene has no view 'abuve'; did you mean 'above'?"),
             std::string::npos)
@@ -225,8 +225,8 @@ TEST(RtAnimate, WithoutFfmpegAVideoIsRefusedWithExitTwoBeforeAnyFrame) {
   const std::string dir = freshDirectory("animate-no-ffmpeg");
   test::RtOptions options;
   options.path = std::filesystem::absolute(dir).string();  // a PATH without ffmpeg
-  const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2",
-                                  "--width", "32", "-o", dir + "/f", "--video", dir + "/v.mp4"},
+  const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2", "--width",
+                                  "32", "-o", dir + "/f", "--video", dir + "/v.mp4"},
                                  options);
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err,
@@ -249,15 +249,15 @@ TEST(RtAnimate, TheVideoHoldsEveryFrameAtTheFramesSize) {
   EXPECT_NE(r.err.find("rt: wrote " + dir + "/orbit.mp4: 5 frames at 10 frames/s (H.264)\n"),
             std::string::npos)
       << r.err;
-  const test::RtResult probe =
-      runProgram({*ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
-                  "-show_entries", "stream=nb_read_frames,width,height", "-of", "csv=p=0",
-                  dir + "/orbit.mp4"});
+  const test::RtResult probe = runProgram(
+      {*ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+       "stream=nb_read_frames,width,height", "-of", "csv=p=0", dir + "/orbit.mp4"});
   ASSERT_EQ(probe.exitCode, 0) << probe.err;
   EXPECT_EQ(probe.out, "64,36,5\n");
   // Nothing but the video is left beside it (the temporary file was renamed).
   int files = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.is_regular_file();
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    files += entry.is_regular_file();
   EXPECT_EQ(files, 1);
 }
 

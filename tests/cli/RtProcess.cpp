@@ -83,11 +83,12 @@ RtResult runProgram(const std::vector<std::string>& command, const RtOptions& op
   return r;
 }
 
-RtChild::RtChild(const std::vector<std::string>& args) : RtChild(Program{[&] {
-  std::vector<std::string> all{RT_EXE};
-  all.insert(all.end(), args.begin(), args.end());
-  return all;
-}()}) {}
+RtChild::RtChild(const std::vector<std::string>& args)
+    : RtChild(Program{[&] {
+        std::vector<std::string> all{RT_EXE};
+        all.insert(all.end(), args.begin(), args.end());
+        return all;
+      }()}) {}
 
 RtChild::RtChild(const Program& program) {
   std::vector<std::string> all = program.argv;

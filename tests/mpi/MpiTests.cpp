@@ -27,9 +27,15 @@ namespace fs = std::filesystem;
 /// mpirun -np N rt-mpi ARGS...: as many ranks as asked on this machine whatever its cores, as
 /// root if need be (CI), without the shared-memory single copy that containers forbid.
 std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args) {
-  std::vector<std::string> all{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root", "--mca",
-                               "btl_vader_single_copy_mechanism", "none", "-np",
-                               std::to_string(ranks), RT_MPI_EXE};
+  std::vector<std::string> all{RT_MPIEXEC,
+                               "--oversubscribe",
+                               "--allow-run-as-root",
+                               "--mca",
+                               "btl_vader_single_copy_mechanism",
+                               "none",
+                               "-np",
+                               std::to_string(ranks),
+                               RT_MPI_EXE};
   all.insert(all.end(), args.begin(), args.end());
   return all;
 }
@@ -93,15 +99,15 @@ TEST_F(RtMpi, TheGalaxyIsTheBytesOfRtRenderForOneTwoAndThreeRanksAndAnyThreads) 
   const std::string expected = readFile(path("rt.png"));
   for (const int ranks : {1, 2, 3})
     for (const int threads : {1, 2}) {
-      const std::string out = path("mpi-" + std::to_string(ranks) + "x" +
-                                   std::to_string(threads) + ".png");
+      const std::string out =
+          path("mpi-" + std::to_string(ranks) + "x" + std::to_string(threads) + ".png");
       const RtResult r = runMpi(ranks, {"render", "galaxy", "--width", "96", "-o", out, "-q",
                                         "--threads", std::to_string(threads)});
       ASSERT_EQ(r.exitCode, 0) << ranks << "x" << threads << ": " << r.err;
       EXPECT_EQ(readFile(out), expected) << ranks << " ranks x " << threads << " threads";
       const std::string where = "on " + std::to_string(ranks) +
-                                (ranks == 1 ? " rank x " : " ranks x ") +
-                                std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+                                (ranks == 1 ? " rank x " : " ranks x ") + std::to_string(threads) +
+                                (threads == 1 ? " thread" : " threads");
       EXPECT_NE(r.err.find("rt-mpi: wrote " + out + ": 96x54, tracer beams, 5184 primary rays"),
                 std::string::npos)
           << r.err;
@@ -130,13 +136,17 @@ TEST_F(RtMpi, RankZeroSendsTheSceneAndItsModelFileToRanksThatCannotReadThem) {
   const std::string scene = "scenes/model-shading.json";
   RtOptions inRepository;
   inRepository.cwd = scenesParent;
-  ASSERT_EQ(runRt({"render", scene, "--width", "640", "-o", path("rt.png"), "-s"}, inRepository)
-                .exitCode,
-            0);
-  std::vector<std::string> command{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root",
-                                   "--mca", "btl_vader_single_copy_mechanism", "none"};
-  const std::vector<std::string> args{"render", scene, "--width", "640", "-o", path("mpi.png"),
-                                      "--threads", "1"};
+  ASSERT_EQ(
+      runRt({"render", scene, "--width", "640", "-o", path("rt.png"), "-s"}, inRepository).exitCode,
+      0);
+  std::vector<std::string> command{RT_MPIEXEC,
+                                   "--oversubscribe",
+                                   "--allow-run-as-root",
+                                   "--mca",
+                                   "btl_vader_single_copy_mechanism",
+                                   "none"};
+  const std::vector<std::string> args{"render", scene,           "--width",   "640",
+                                      "-o",     path("mpi.png"), "--threads", "1"};
   for (const std::string& wdir : {scenesParent, empty}) {
     if (wdir == empty) command.push_back(":");
     command.insert(command.end(), {"-np", "1", "-wdir", wdir, RT_MPI_EXE});
@@ -196,8 +206,9 @@ TEST_F(RtMpi, ABadSceneFailsEveryRankWithOneMessageAndWritesNothing) {
   ASSERT_EQ(single.exitCode, 2) << single.err;
   ASSERT_EQ(single.err.rfind("rt: ", 0), 0u) << single.err;
   const std::string message = single.err.substr(4, single.err.find('\n') - 4);
-  EXPECT_EQ(message, path("bad.json") + ":4:55: geometries[0].radius: expected a positive "
-                                        "number, got -2");
+  EXPECT_EQ(message, path("bad.json") +
+                         ":4:55: geometries[0].radius: expected a positive "
+                         "number, got -2");
   const RtResult r = runMpi(3, {"render", path("bad.json"), "-o", path("bad.png")});
   EXPECT_EQ(r.exitCode, 2) << r.err;
   const std::vector<std::string> lines = rtMpiLines(r.err);
@@ -214,15 +225,21 @@ TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
                   "shadow memory, which ulimit -v refuses before main; the release build runs "
                   "this test";
 #endif
-  std::vector<std::string> command{RT_MPIEXEC, "--oversubscribe", "--allow-run-as-root",
-                                   "--mca", "btl_vader_single_copy_mechanism", "none", "-np", "1",
+  std::vector<std::string> command{RT_MPIEXEC,
+                                   "--oversubscribe",
+                                   "--allow-run-as-root",
+                                   "--mca",
+                                   "btl_vader_single_copy_mechanism",
+                                   "none",
+                                   "-np",
+                                   "1",
                                    RT_MPI_EXE};
-  const std::vector<std::string> args{"render", "galaxy", "--param", "stars=4000000", "--width",
-                                      "32", "-o", path("oom.png"), "-q"};
+  const std::vector<std::string> args{
+      "render", "galaxy", "--param", "stars=4000000", "--width", "32", "-o", path("oom.png"), "-q"};
   command.insert(command.end(), args.begin(), args.end());
-  command.insert(command.end(), {":", "-np", "1", "sh", "-c",
-                                 std::string("ulimit -v 400000 && exec \"$0\" \"$@\""),
-                                 RT_MPI_EXE});
+  command.insert(command.end(),
+                 {":", "-np", "1", "sh", "-c",
+                  std::string("ulimit -v 400000 && exec \"$0\" \"$@\""), RT_MPI_EXE});
   command.insert(command.end(), args.begin(), args.end());
   const RtResult r = runProgram(command);
   EXPECT_NE(r.exitCode, 0);
@@ -230,8 +247,8 @@ TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
   ASSERT_EQ(lines.size(), 1u) << r.err;
   char host[256] = {};
   ::gethostname(host, sizeof host - 1);
-  EXPECT_EQ(lines[0], "rt-mpi: rank 1 on " + std::string(host) +
-                          ": cannot build the scene: out of memory");
+  EXPECT_EQ(lines[0],
+            "rt-mpi: rank 1 on " + std::string(host) + ": cannot build the scene: out of memory");
   EXPECT_FALSE(fs::exists(path("oom.png")));
 }
 
@@ -269,15 +286,15 @@ TEST_F(RtMpi, CtrlCOnMpirunStopsEveryRankAndLeavesTheImageAsItWas) {
 TEST_F(RtMpi, AnimateEncodesTheVideoOnRankZero) {
   if (runProgram({"/bin/sh", "-c", "command -v ffmpeg && command -v ffprobe"}).exitCode != 0)
     GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";
-  const RtResult r = runMpi(2, {"animate", "galaxy", "--orbit", "360", "--frames", "4",
-                                "--width", "48", "-o", path("f"), "--video", path("v.mp4"),
-                                "--threads", "1", "-q"});
+  const RtResult r =
+      runMpi(2, {"animate", "galaxy", "--orbit", "360", "--frames", "4", "--width", "48", "-o",
+                 path("f"), "--video", path("v.mp4"), "--threads", "1", "-q"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const RtResult probe = runProgram(
-      {"/bin/sh", "-c",
-       "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-       "stream=nb_read_frames,width,height -of csv=p=0 \"$0\"",
-       path("v.mp4")});
+  const RtResult probe =
+      runProgram({"/bin/sh", "-c",
+                  "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                  "stream=nb_read_frames,width,height -of csv=p=0 \"$0\"",
+                  path("v.mp4")});
   EXPECT_EQ(probe.out, "48,28,4\n") << probe.err;  // 48x27 padded to an even height
 }
 

@@ -382,8 +382,8 @@ std::optional<std::string> refusalAsUnprivileged(const fs::path& file, const Mod
     } catch (const ModelError& e) {
       message = e.what();
     }
-    const bool written = ::write(channel[1], message.data(), message.size()) ==
-                         static_cast<ssize_t>(message.size());
+    const bool written =
+        ::write(channel[1], message.data(), message.size()) == static_cast<ssize_t>(message.size());
     ::_exit(written ? 0 : 4);
   }
   ::close(channel[1]);

@@ -53,9 +53,12 @@ int animate(const AnimateArgs& args, const Io& io) {
     }
     for (const int k : plan.frames) {
       Camera camera = plan.cameras[static_cast<std::size_t>(k)].builder().build();
-      const RenderOutcome outcome = cliRegistry().render(
-          {{camera, *traced.tracer, *sampler}, camera.image(), doc.render.threads, io.stop,
-           donePixels, doneRays});
+      const RenderOutcome outcome = cliRegistry().render({{camera, *traced.tracer, *sampler},
+                                                          camera.image(),
+                                                          doc.render.threads,
+                                                          io.stop,
+                                                          donePixels,
+                                                          doneRays});
       if (outcome.interrupted || (io.stop && io.stop->load())) {
         interrupted = true;
         break;
@@ -121,8 +124,7 @@ void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
               "a path through the scene's named views, in this order (all: every view)",
               "VIEW,VIEW,...");
   command
-      .add_option("--frames", into.frames,
-                  "frames in the path, 1.." + std::to_string(MAX_FRAMES))
+      .add_option("--frames", into.frames, "frames in the path, 1.." + std::to_string(MAX_FRAMES))
       ->type_name("N")
       ->required()
       ->transform(integerValidator(1, MAX_FRAMES));

@@ -192,15 +192,14 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
     throw UsageError("--fps: expected a number of frames per second in (0, 1000], got " +
                      std::to_string(args.fps));
 
-  AnimationPlan plan{resolveRenderRequest(args.scene, {.writesImage = false,
-                                                       .makesImage = true,
-                                                       .renders = true}),
-                     {},
-                     {},
-                     {},
-                     args.video,
-                     "",
-                     args.fps};
+  AnimationPlan plan{
+      resolveRenderRequest(args.scene, {.writesImage = false, .makesImage = true, .renders = true}),
+      {},
+      {},
+      {},
+      args.video,
+      "",
+      args.fps};
   const SceneDocument& doc = plan.request.doc;
   if (args.orbit) {
     plan.cameras = orbitCameras(doc.camera, *args.orbit, args.frames);
@@ -225,11 +224,9 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
       for (const NamedView& v : doc.views)
         if (v.name == name) found = &v;
       if (!found)
-        throw UsageError("--through: the scene has no view '" + name + "'" +
-                         didYouMean(name, known) + " (" +
-                         (known.empty() ? std::string("it has none")
-                                        : "its views: " + joinNames(known)) +
-                         ")");
+        throw UsageError(
+            "--through: the scene has no view '" + name + "'" + didYouMean(name, known) + " (" +
+            (known.empty() ? std::string("it has none") : "its views: " + joinNames(known)) + ")");
       CameraSpec c = found->camera;
       // A view gets --width/--height as `rt render --view` gives them, so that a frame on a
       // view is that render's image; a view whose size then differs from the scene camera's
@@ -248,10 +245,10 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
   }
 
   // The folder: created when missing (its parent must exist), then a frame's file tried there.
-  const std::string dir = args.output.value_or(
-      (isSceneFileArgument(args.scene.argument) ? fs::path(args.scene.argument).stem().string()
-                                                : args.scene.argument) +
-      "-frames");
+  const std::string dir = args.output.value_or((isSceneFileArgument(args.scene.argument)
+                                                    ? fs::path(args.scene.argument).stem().string()
+                                                    : args.scene.argument) +
+                                               "-frames");
   plan.directory = dir;
   if (!writes) return plan;
   std::error_code ec;
@@ -289,10 +286,20 @@ void encodeVideo(const AnimationPlan& plan) {
   fps.precision(17);
   fps << plan.fps;
   // yuv420p, which every player reads, needs an even width and height: odd ones are padded.
-  std::vector<std::string> argv{plan.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin",
-                                "-y", "-framerate", fps.str(), "-i", pattern, "-vf",
-                                "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-pix_fmt",
-                                "yuv420p", temporary.string()};
+  // An option and its value a line.
+  // clang-format off
+  std::vector<std::string> argv{plan.ffmpeg,
+                                "-hide_banner",
+                                "-loglevel", "error",
+                                "-nostdin",
+                                "-y",
+                                "-framerate", fps.str(),
+                                "-i", pattern,
+                                "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+                                "-c:v", "libx264",
+                                "-pix_fmt", "yuv420p",
+                                temporary.string()};
+  // clang-format on
   std::vector<char*> cargv;
   for (std::string& a : argv) cargv.push_back(a.data());
   cargv.push_back(nullptr);
@@ -326,7 +333,8 @@ void encodeVideo(const AnimationPlan& plan) {
   std::error_code ec;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     fs::remove(temporary, ec);
-    while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+    while (!message.empty() && (message.back() == '\n' || message.back() == '\r'))
+      message.pop_back();
     throw std::runtime_error("ffmpeg could not encode " + *plan.video + " from " + pattern +
                              (message.empty() ? std::string(" (no message)") : ": " + message));
   }

@@ -73,10 +73,9 @@ int render(const RenderArgs& args, const Io& io) {
   finishImage(setup.camera, doc, args.gridLines, output);
   if (!args.silent)
     io.err << "rt: "
-           << renderSummary(output, nX, nY, kind, outcome.counts, seconds,
-                            outcome.threads > 1
-                                ? "on " + std::to_string(outcome.threads) + " threads"
-                                : "")
+           << renderSummary(
+                  output, nX, nY, kind, outcome.counts, seconds,
+                  outcome.threads > 1 ? "on " + std::to_string(outcome.threads) + " threads" : "")
            << "\n";
   return EXIT_OK;
 }

@@ -118,8 +118,8 @@ std::vector<std::string> sceneWarnings(const SceneDocument& doc, const SceneArgu
   const Scene& scene = *doc.scene;
   const Double3& ambient = scene.ambientLight.intensity().rgb();
   const TracerKind* tracer = tracerNamed(doc.render.tracer);  // "": the build's default
-  if (!rendering || !tracer || tracer->name != "ambient" || scene.geometries.primitiveCount() == 0 ||
-      !ambient.isExactlyZero())
+  if (!rendering || !tracer || tracer->name != "ambient" ||
+      scene.geometries.primitiveCount() == 0 || !ambient.isExactlyZero())
     return warnings;
   // The later stages' tracers, which show the lights (not the debugging views).
   std::string others;

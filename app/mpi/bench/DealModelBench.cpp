@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
+#include "DealModel.h"
 #include "benchmark/Measure.h"
 #include "camera/Camera.h"
 #include "cli/RenderCommand.h"
 #include "cli/RenderRequest.h"
-#include "DealModel.h"
 #include "parallel/TileGrid.h"
 
 namespace rt::mpi::model {
@@ -64,8 +64,8 @@ std::vector<int> parseList(const std::string& text, const char* option) {
     char* end = nullptr;
     const long v = std::strtol(item.c_str(), &end, 10);
     if (item.empty() || *end != '\0' || v < 1 || v > 100000)
-      throw std::invalid_argument(std::string(option) + ": expected counts from 1 to 100000, got '" +
-                                  item + "'");
+      throw std::invalid_argument(std::string(option) +
+                                  ": expected counts from 1 to 100000, got '" + item + "'");
     out.push_back(static_cast<int>(v));
     start = comma + 1;
   }
@@ -90,14 +90,22 @@ Options parse(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(a + ": expected a value after it");
       return argv[++i];
     };
-    if (a == "--width") o.width = static_cast<int>(parseNumber(value(), "--width", 16, 16384));
-    else if (a == "--cores") o.cores = static_cast<int>(parseNumber(value(), "--cores", 1, 1024));
-    else if (a == "--machines") o.machines = parseList(value(), "--machines");
-    else if (a == "--frames") o.frames = static_cast<int>(parseNumber(value(), "--frames", 1, 100000));
-    else if (a == "--gbit") o.gbit = parseNumber(value(), "--gbit", 0.001, 1000);
-    else if (a == "--tile") o.tile = static_cast<int>(parseNumber(value(), "--tile", 8, 64));
-    else if (!a.empty() && a[0] == '-') throw std::invalid_argument("unknown option '" + a + "'");
-    else o.scene = a;
+    if (a == "--width")
+      o.width = static_cast<int>(parseNumber(value(), "--width", 16, 16384));
+    else if (a == "--cores")
+      o.cores = static_cast<int>(parseNumber(value(), "--cores", 1, 1024));
+    else if (a == "--machines")
+      o.machines = parseList(value(), "--machines");
+    else if (a == "--frames")
+      o.frames = static_cast<int>(parseNumber(value(), "--frames", 1, 100000));
+    else if (a == "--gbit")
+      o.gbit = parseNumber(value(), "--gbit", 0.001, 1000);
+    else if (a == "--tile")
+      o.tile = static_cast<int>(parseNumber(value(), "--tile", 8, 64));
+    else if (!a.empty() && a[0] == '-')
+      throw std::invalid_argument("unknown option '" + a + "'");
+    else
+      o.scene = a;
   }
   if (o.tile % 8 != 0) throw std::invalid_argument("--tile: expected a multiple of 8 from 8 to 64");
   return o;
@@ -137,8 +145,10 @@ const char* limitName(double compute, double link, double last, double dealer) {
 
 void oneFrame(const std::vector<double>& fineCost, const TileGrid& fine, int nX, int nY,
               const Options& o, const Network& net, const Dealer& dealer) {
-  std::printf("\nOne frame, %d x %d, on machines of %d cores (one rank of %d threads each), links "
-              "of %.3g Gbit/s:\n", nX, nY, o.cores, o.cores, o.gbit);
+  std::printf(
+      "\nOne frame, %d x %d, on machines of %d cores (one rank of %d threads each), links "
+      "of %.3g Gbit/s:\n",
+      nX, nY, o.cores, o.cores, o.gbit);
   std::printf("%5s %9s %6s %12s %11s %10s %9s %11s %10s %10s %12s  %s\n", "tile", "machines",
               "cores", "predicted s", "vs 1 mach.", "vs 1 core", "effic.", "compute s", "link s",
               "max tile", "rank 0 busy", "bound");
@@ -150,8 +160,8 @@ void oneFrame(const std::vector<double>& fineCost, const TileGrid& fine, int nX,
       const int cores = m * o.cores;
       const double compute = r.computeSeconds / cores;
       // Every remote pixel crosses rank 0's link; rank 0's own share (1/m) does not.
-      const double link = static_cast<double>(nX) * nY * PIXEL_BYTES * (m - 1) / m /
-                          net.bytesPerSecond;
+      const double link =
+          static_cast<double>(nX) * nY * PIXEL_BYTES * (m - 1) / m / net.bytesPerSecond;
       const double last = maxSeconds(units);
       std::printf("%5d %9d %6d %12.3f %11.2f %10.1f %8.0f%% %11.3f %10.3f %10.3f %12.3f  %s\n",
                   side, m, cores, r.seconds, single / r.seconds, r.computeSeconds / r.seconds,
@@ -170,10 +180,11 @@ void orbit(const std::vector<Unit>& tiles, int nX, int nY, const Options& o, con
   std::vector<Unit> frames(static_cast<std::size_t>(o.frames));
   for (int f = 0; f < o.frames; ++f)
     frames[static_cast<std::size_t>(f)] = Unit{frameOnRank, frameBytes, f};
-  std::printf("\nAn orbit of %d frames dealt as whole frames, each %.3f s on a rank's %d threads "
-              "(tiles of %d), %.1f MB per frame (%llu bytes a pixel):\n", o.frames, frameOnRank,
-              o.cores, o.tile, static_cast<double>(frameBytes) / 1e6,
-              static_cast<unsigned long long>(pixelBytes));
+  std::printf(
+      "\nAn orbit of %d frames dealt as whole frames, each %.3f s on a rank's %d threads "
+      "(tiles of %d), %.1f MB per frame (%llu bytes a pixel):\n",
+      o.frames, frameOnRank, o.cores, o.tile, static_cast<double>(frameBytes) / 1e6,
+      static_cast<unsigned long long>(pixelBytes));
   std::printf("%9s %6s %12s %11s %11s %10s %14s  %s\n", "machines", "cores", "predicted s",
               "vs 1 mach.", "compute s", "link s", "rank 0 busy s", "bound");
   const double single = replay(frames, {1, 1}, net, dealer, HEADER_BYTES).seconds;
@@ -226,9 +237,10 @@ int run(int argc, char** argv) {
   std::filesystem::remove(png);
   Dealer dealer;
   dealer.perFrameWrite = median(writes);
-  std::printf("%zu tiles: %.3f CPU s in all (%.3f s wall), the costliest %.4f s; finishing and "
-              "writing the frame %.4f s\n", cost.size(), total, wall,
-              *std::max_element(cost.begin(), cost.end()), dealer.perFrameWrite);
+  std::printf(
+      "%zu tiles: %.3f CPU s in all (%.3f s wall), the costliest %.4f s; finishing and "
+      "writing the frame %.4f s\n",
+      cost.size(), total, wall, *std::max_element(cost.begin(), cost.end()), dealer.perFrameWrite);
 
   Network net;
   net.bytesPerSecond = o.gbit * 117.5e6;
@@ -243,11 +255,11 @@ int run(int argc, char** argv) {
   local.latency = 1e-6;
   const Outcome oneRank = replay(tiles, {1, 2}, local, dealer, HEADER_BYTES);
   const Outcome twoRanks = replay(tiles, {2, 1}, local, dealer, HEADER_BYTES);
-  std::printf("\nThis machine, tiles of %d: 1 rank x 2 threads %.3f s; 2 ranks x 1 thread %.3f s "
-              "(%llu messages, %.3f MiB through rank 0)\n", o.tile,
-              oneRank.seconds, twoRanks.seconds,
-              static_cast<unsigned long long>(twoRanks.messages),
-              static_cast<double>(twoRanks.bytes) / (1 << 20));
+  std::printf(
+      "\nThis machine, tiles of %d: 1 rank x 2 threads %.3f s; 2 ranks x 1 thread %.3f s "
+      "(%llu messages, %.3f MiB through rank 0)\n",
+      o.tile, oneRank.seconds, twoRanks.seconds, static_cast<unsigned long long>(twoRanks.messages),
+      static_cast<double>(twoRanks.bytes) / (1 << 20));
   return 0;
 }
 

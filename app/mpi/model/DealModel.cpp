@@ -39,7 +39,8 @@ int dealtTileSide(int nX, int nY, std::uint64_t frames, long long threads) {
 }
 
 double poolSeconds(const std::vector<double>& seconds, int threads) {
-  if (threads < 1) throw std::invalid_argument("poolSeconds: threads is " + std::to_string(threads));
+  if (threads < 1)
+    throw std::invalid_argument("poolSeconds: threads is " + std::to_string(threads));
   std::priority_queue<double, std::vector<double>, std::greater<>> free;
   for (int t = 0; t < threads; ++t) free.push(0);
   double finish = 0;
@@ -63,7 +64,8 @@ Outcome replay(const std::vector<Unit>& units, const Cluster& cluster, const Net
   // Units left per frame: the one that brings a frame to zero has it written.
   std::vector<long long> left;
   for (const Unit& u : units) {
-    if (u.frame >= static_cast<int>(left.size())) left.resize(static_cast<std::size_t>(u.frame) + 1, 0);
+    if (u.frame >= static_cast<int>(left.size()))
+      left.resize(static_cast<std::size_t>(u.frame) + 1, 0);
     ++left[static_cast<std::size_t>(u.frame)];
   }
   const int workers = cluster.machines * cluster.workersPerMachine;
@@ -74,7 +76,8 @@ Outcome replay(const std::vector<Unit>& units, const Cluster& cluster, const Net
   for (int w = 0; w < workers; ++w) events.push({0, Kind::READY, w, -1});
 
   const auto written = [&](long long done) {
-    return done >= 0 && --left[static_cast<std::size_t>(units[static_cast<std::size_t>(done)].frame)] == 0;
+    return done >= 0 &&
+           --left[static_cast<std::size_t>(units[static_cast<std::size_t>(done)].frame)] == 0;
   };
   while (!events.empty()) {
     const Event e = events.top();
@@ -91,7 +94,8 @@ Outcome replay(const std::vector<Unit>& units, const Cluster& cluster, const Net
       events.push({t + units[static_cast<std::size_t>(u)].seconds, Kind::READY, e.worker, u});
     } else if (e.kind == Kind::READY) {
       // Through its machine's link, then rank 0's (one message at a time each).
-      const std::uint64_t bytes = e.done < 0 ? headerBytes : units[static_cast<std::size_t>(e.done)].bytes;
+      const std::uint64_t bytes =
+          e.done < 0 ? headerBytes : units[static_cast<std::size_t>(e.done)].bytes;
       const double transfer = static_cast<double>(bytes) / network.bytesPerSecond;
       double& up = linkOut[static_cast<std::size_t>(machine)];
       const double sent = std::max(e.time, up) + transfer;

@@ -30,7 +30,7 @@ struct Unit {
 };
 
 struct Cluster {
-  int machines = 1;  ///< one rank each; rank 0's machine is the first
+  int machines = 1;           ///< one rank each; rank 0's machine is the first
   int workersPerMachine = 1;  ///< threads asking for units on each rank (frames mode: 1)
 };
 
@@ -40,10 +40,10 @@ struct Network {
 };
 
 struct Dealer {
-  double perMessage = 10e-6;    ///< rank 0's main thread per message (receive, copy, answer)
-  double idlePoll = 1e-3;       ///< its longest sleep when nothing came: an idle dealer answers
-                                ///< half of it later (rt-mpi sleeps 50 µs, doubled up to 1 ms)
-  double perFrameWrite = 0;     ///< finishing and writing one frame (PNG)
+  double perMessage = 10e-6;  ///< rank 0's main thread per message (receive, copy, answer)
+  double idlePoll = 1e-3;     ///< its longest sleep when nothing came: an idle dealer answers
+                              ///< half of it later (rt-mpi sleeps 50 µs, doubled up to 1 ms)
+  double perFrameWrite = 0;   ///< finishing and writing one frame (PNG)
 };
 
 struct Outcome {

@@ -68,7 +68,8 @@ void copyOut(const Image& image, const PixelBlock& b, double* out) noexcept {
 
 void copyIn(Image& image, const PixelBlock& b, const double* in) {
   for (int y = b.y0; y < b.y1; ++y)
-    for (int x = b.x0; x < b.x1; ++x, in += 3) image.setPixel(x, y, Color(Double3(in[0], in[1], in[2])));
+    for (int x = b.x0; x < b.x1; ++x, in += 3)
+      image.setPixel(x, y, Color(Double3(in[0], in[1], in[2])));
 }
 
 std::string messageOf(const std::exception& e) {
@@ -86,10 +87,11 @@ class CameraCache {
     const std::lock_guard<std::mutex> lock(mutex_);
     auto it = cameras_.find(frame);
     if (it == cameras_.end()) {
-      it = cameras_
-               .emplace(frame, std::make_shared<Camera>(
-                                   spec_.cameras[static_cast<std::size_t>(frame)].builder().build()))
-               .first;
+      it =
+          cameras_
+              .emplace(frame, std::make_shared<Camera>(
+                                  spec_.cameras[static_cast<std::size_t>(frame)].builder().build()))
+              .first;
       while (cameras_.size() > keep_) cameras_.erase(cameras_.begin());
       it = cameras_.find(frame);
     }
@@ -340,7 +342,8 @@ JobOutcome runDealer(const JobSpec& spec, const std::vector<std::string>& hosts,
     ++outcome.messages;
     outcome.bytes += static_cast<std::uint64_t>(count);
     if (h.status == FAILED) {
-      fail(source, std::string(buffer.data() + sizeof h, static_cast<std::size_t>(count) - sizeof h));
+      fail(source,
+           std::string(buffer.data() + sizeof h, static_cast<std::size_t>(count) - sizeof h));
     } else if (h.status == STOPPED) {
       const std::lock_guard<std::mutex> lock(mutex);
       outcome.interrupted = true;

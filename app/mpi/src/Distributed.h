@@ -26,12 +26,12 @@
 #include <string>
 #include <vector>
 
+#include "Wire.h"
 #include "camera/CameraSpec.h"
 #include "camera/RayTracer.h"
 #include "camera/RenderBlock.h"
 #include "cli/Commands.h"
 #include "scenefile/SceneDocument.h"
-#include "Wire.h"
 
 namespace rt::mpi {
 
@@ -50,14 +50,14 @@ struct JobSpec {
 
 /// What the job did, as rank 0 knows it.
 struct JobOutcome {
-  RayCounts counts;                    ///< every rank's rays
-  std::optional<RankFailure> failure;  ///< the first failure, if any
-  bool interrupted = false;            ///< a rank was stopped by a signal
-  std::uint64_t units = 0;             ///< units dealt
+  RayCounts counts;                        ///< every rank's rays
+  std::optional<RankFailure> failure;      ///< the first failure, if any
+  bool interrupted = false;                ///< a rank was stopped by a signal
+  std::uint64_t units = 0;                 ///< units dealt
   std::vector<std::uint64_t> unitsByRank;  ///< units each rank rendered (index: rank)
-  std::uint64_t messages = 0;          ///< messages rank 0 received and sent
-  std::uint64_t bytes = 0;             ///< their bytes
-  int framesWritten = 0;               ///< frames complete and written
+  std::uint64_t messages = 0;              ///< messages rank 0 received and sent
+  std::uint64_t bytes = 0;                 ///< their bytes
+  int framesWritten = 0;                   ///< frames complete and written
 };
 
 /// Raised by a signal (SIGINT, SIGTERM) on this rank: its threads stop at the next row.

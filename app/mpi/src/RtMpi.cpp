@@ -100,8 +100,8 @@ Package unpacked(const std::string& bytes) {
 struct Resolved {
   cli::RenderRequest request;
   std::vector<CameraSpec> cameras;
-  std::vector<std::string> outputs;          ///< rank 0
-  std::optional<cli::AnimationPlan> plan;    ///< animate
+  std::vector<std::string> outputs;        ///< rank 0
+  std::optional<cli::AnimationPlan> plan;  ///< animate
 };
 
 /// What distributeScene leaves on a rank.
@@ -116,8 +116,8 @@ struct Distributed {
 /// Rank 0 resolves with the disk (its model files recorded) and sends what it read, or its
 /// error; the others resolve from that. resolve(scene, writes) is the command's resolution.
 template <typename Resolve>
-void distributeScene(const World& world, cli::SceneArguments scene, Resolve resolve,
-                     Distributed& d, const cli::Io& io) {
+void distributeScene(const World& world, cli::SceneArguments scene, Resolve resolve, Distributed& d,
+                     const cli::Io& io) {
   std::string bytes;
   if (world.rank == 0) {
     try {
@@ -188,9 +188,9 @@ void warnAboutBinding(const std::vector<int>& threads, const std::vector<int>& a
     const bool crowded = threads[r] > allowed[r];
     const bool idle = usable[hosts[r]] < machine[r];
     if (!crowded && !idle) continue;
-    io.err << "rt-mpi: warning: rank " << r << " on " << hosts[r] << " is bound to "
-           << allowed[r] << " of the machine's " << machine[r] << " cores and renders with "
-           << threads[r] << (threads[r] == 1 ? " thread" : " threads")
+    io.err << "rt-mpi: warning: rank " << r << " on " << hosts[r] << " is bound to " << allowed[r]
+           << " of the machine's " << machine[r] << " cores and renders with " << threads[r]
+           << (threads[r] == 1 ? " thread" : " threads")
            << (crowded ? ", which share them" : "; the machine's other cores stay idle")
            << "; for one rank per machine run mpirun with --bind-to none, or give each rank N "
               "cores with --map-by slot:PE=N (docs/distributed.md)\n";
@@ -215,8 +215,8 @@ std::string describeShares(const std::vector<std::uint64_t>& units) {
 
 std::string describeRanks(const std::vector<int>& threads) {
   const int ranks = static_cast<int>(threads.size());
-  const bool same = std::all_of(threads.begin(), threads.end(),
-                                [&](int t) { return t == threads.front(); });
+  const bool same =
+      std::all_of(threads.begin(), threads.end(), [&](int t) { return t == threads.front(); });
   std::ostringstream os;
   os << "on " << ranks << (ranks == 1 ? " rank" : " ranks");
   if (same) {
@@ -262,8 +262,8 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
   }
   if (const std::optional<RankFailure> failed = firstFailure(error, world.hosts, world.comm)) {
     if (world.rank == 0)
-      io.err << "rt-mpi: rank " << failed->rank << " on " << failed->host << ": "
-             << failed->message << "\n";
+      io.err << "rt-mpi: rank " << failed->rank << " on " << failed->host << ": " << failed->message
+             << "\n";
     return EXIT_FAILURE_RUNTIME;
   }
 
@@ -305,8 +305,7 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
     const cli::TracerKind& kind = *resolved->request.tracer;
     const bool quiet = job.quiet || job.silent;
     const std::uint64_t total = framePixels * resolved->cameras.size();
-    if (!job.silent && world.size > 1 && !world.threadsMayCallMpi && !wholeFrames &&
-        threads > 1)
+    if (!job.silent && world.size > 1 && !world.threadsMayCallMpi && !wholeFrames && threads > 1)
       io.err << "rt-mpi: warning: this MPI library gives no MPI_THREAD_MULTIPLE: the ranks "
                 "other than 0 render with one thread each\n";
     std::atomic<std::uint64_t> donePixels{0}, doneRays{0};
@@ -321,9 +320,9 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
                  << (resolved->cameras.size() == 1 ? " frame of " : " frames of ");
         io.err << first.nX << "x" << first.nY << ", tracer " << kind.name << ") "
                << describeRanks(allThreads) << ", dealing "
-               << (wholeFrames ? "frames" : "tiles of " +
-                                                std::to_string(spec.tileSize) + "x" +
-                                                std::to_string(spec.tileSize))
+               << (wholeFrames ? "frames"
+                               : "tiles of " + std::to_string(spec.tileSize) + "x" +
+                                     std::to_string(spec.tileSize))
                << "\n";
         progress = std::make_unique<cli::ProgressMonitor>(
             io.err,
@@ -338,26 +337,25 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
     const std::string target =
         job.animate ? resolved->plan->directory.string() : resolved->outputs.front();
     if (outcome.failure) {
-      io.err << "rt-mpi: rank " << outcome.failure->rank << " on " << outcome.failure->host
-             << ": " << outcome.failure->message << "; "
-             << (job.animate ? std::to_string(outcome.framesWritten) +
-                                   " whole frames written to " + target
-                             : "nothing written to " + target)
+      io.err << "rt-mpi: rank " << outcome.failure->rank << " on " << outcome.failure->host << ": "
+             << outcome.failure->message << "; "
+             << (job.animate
+                     ? std::to_string(outcome.framesWritten) + " whole frames written to " + target
+                     : "nothing written to " + target)
              << "\n";
       code = EXIT_FAILURE_RUNTIME;
     } else if (outcome.interrupted) {
-      io.err << "rt-mpi: interrupted after " << donePixels.load() << " of " << total
-             << " pixels; "
-             << (job.animate ? std::to_string(outcome.framesWritten) +
-                                   " whole frames written to " + target
-                             : "nothing written to " + target)
+      io.err << "rt-mpi: interrupted after " << donePixels.load() << " of " << total << " pixels; "
+             << (job.animate
+                     ? std::to_string(outcome.framesWritten) + " whole frames written to " + target
+                     : "nothing written to " + target)
              << "\n";
       code = EXIT_INTERRUPTED;
     } else {
-      const std::string output =
-          job.animate ? target + " (" + std::to_string(outcome.framesWritten) +
-                            (outcome.framesWritten == 1 ? " frame)" : " frames)")
-                      : target;
+      const std::string output = job.animate
+                                     ? target + " (" + std::to_string(outcome.framesWritten) +
+                                           (outcome.framesWritten == 1 ? " frame)" : " frames)")
+                                     : target;
       if (!job.silent)
         io.err << "rt-mpi: "
                << cli::renderSummary(output, first.nX, first.nY, kind, outcome.counts, seconds,
@@ -365,16 +363,14 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
                << "\n";
       if (!quiet)
         io.err << "rt-mpi: dealt " << outcome.units << (wholeFrames ? " frames" : " tiles")
-               << " on demand (" << describeShares(outcome.unitsByRank) << "): "
-               << outcome.messages << " messages, "
-               << mebibytes(outcome.bytes) << " through rank 0\n";
+               << " on demand (" << describeShares(outcome.unitsByRank) << "): " << outcome.messages
+               << " messages, " << mebibytes(outcome.bytes) << " through rank 0\n";
       if (job.animate && resolved->plan->video) {
         try {
           cli::encodeVideo(*resolved->plan);
           if (!job.silent)
-            io.err << "rt-mpi: wrote " << *resolved->plan->video << ": "
-                   << outcome.framesWritten << " frames at " << resolved->plan->fps
-                   << " frames/s (H.264)\n";
+            io.err << "rt-mpi: wrote " << *resolved->plan->video << ": " << outcome.framesWritten
+                   << " frames at " << resolved->plan->fps << " frames/s (H.264)\n";
         } catch (const std::exception& e) {
           io.err << "rt-mpi: " << e.what() << "\n";
           code = EXIT_FAILURE_RUNTIME;
@@ -429,8 +425,7 @@ int mpiAnimate(const World& world, const cli::AnimateArgs& args, const cli::Io& 
         return r;
       },
       d, io);
-  return runJob(world, d, {args.quiet, args.silent, args.gridLines, args.scene.argument, true},
-                io);
+  return runJob(world, d, {args.quiet, args.silent, args.gridLines, args.scene.argument, true}, io);
 }
 
 constexpr const char* kDescription =
@@ -486,8 +481,7 @@ int runRtMpi(std::span<const std::string> args, const cli::Io& io, MPI_Comm comm
     cli::addRenderOptions(render, *renderArgs);
     auto animateArgs = std::make_shared<cli::AnimateArgs>();
     CLI::App& animate = rtMpi.addCommand(
-        "animate",
-        "render a camera path to frames across the job's ranks (rt animate's options)",
+        "animate", "render a camera path to frames across the job's ranks (rt animate's options)",
         cli::animateCommandDetails() +
             "\nrt-mpi deals whole frames to the ranks (each rendered with all of its\n"
             "threads), or tiles when there are fewer frames than ranks.\n",

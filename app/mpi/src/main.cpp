@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
   NullBuffer nothing;
   std::ostream silent(&nothing);
-  const rt::cli::Io io = rank == 0 ? rt::cli::Io{std::cout, std::cerr,
-                                                 ::isatty(STDERR_FILENO) == 1, &rt::mpi::stopFlag()}
+  const rt::cli::Io io = rank == 0 ? rt::cli::Io{std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1,
+                                                 &rt::mpi::stopFlag()}
                                    : rt::cli::Io{silent, silent, false, &rt::mpi::stopFlag()};
   const int code = rt::mpi::runRtMpi(args, io, MPI_COMM_WORLD, provided >= MPI_THREAD_MULTIPLE);
   std::cout.flush();

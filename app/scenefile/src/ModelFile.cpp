@@ -20,12 +20,12 @@
 #include <system_error>
 #include <utility>
 
-#include <assimp/IOSystem.hpp>
 #include <assimp/MemoryIOWrapper.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
 
 #include "ModelTransform.h"
@@ -322,8 +322,7 @@ ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& o
     if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
       throw ModelError(source, "cannot read: it is not a regular file");
     std::FILE* f = std::fopen(source.c_str(), "rb");
-    if (f == nullptr)
-      throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
+    if (f == nullptr) throw ModelError(source, std::string("cannot read: ") + std::strerror(errno));
     std::string start(kPlyHeaderLimit, '\0');
     start.resize(std::fread(start.data(), 1, start.size(), f));
     std::fclose(f);
@@ -339,10 +338,10 @@ ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& o
     return toModel(postProcess(importer, scene, flags, source), importer, source, options);
   } catch (const std::bad_alloc&) {
     std::error_code ec;
-    const std::uintmax_t size = from.replay ? from.replay->files.at(source).size()
-                                            : std::filesystem::file_size(file, ec);
-    throw ModelError(source, "out of memory while reading the file (" + std::to_string(size) +
-                                 " bytes)");
+    const std::uintmax_t size =
+        from.replay ? from.replay->files.at(source).size() : std::filesystem::file_size(file, ec);
+    throw ModelError(source,
+                     "out of memory while reading the file (" + std::to_string(size) + " bytes)");
   }
 }
 

@@ -46,8 +46,9 @@ enum class ScalingAccel { Bvh, Grid };
 /// timed (the binary build and the collapse). The scene must outlive it.
 struct TimedStructure {
   std::unique_ptr<WideBvh> bvh;  ///< null for ScalingAccel::Grid
-  std::unique_ptr<Grid> grid;  ///< null for ScalingAccel::Bvh
-  double buildSeconds = 0;     ///< the build's wall time (the BVH's on every core, the grid's on one)
+  std::unique_ptr<Grid> grid;    ///< null for ScalingAccel::Bvh
+  /// The build's wall time (the BVH's on every core, the grid's on one).
+  double buildSeconds = 0;
 
   /// The structure, as a tracer takes it (null before one is built).
   const Intersectable* get() const noexcept;

@@ -59,8 +59,8 @@ struct BubbleOptions {
 /// point (1.4, 0, 2.4), on the rim, is the course's first point (40.6266, 28.3457, -1.10804),
 /// his bottom (z = 0) the course's y = -39.8754, his knob's top (z = 3.15) y = 49.6647. With
 /// the scale 28.42544, fitted to them, the course's points (printed to 6 digits; the tests check
-/// nine, on every part) are vertices of ours to within 1e-4. The teapot spans x from -84.4 (the handle) to 98.3 (the spout's tip) and y from
-/// -39.9 to 49.7, the middle of the 200 x 200 view.
+/// nine, on every part) are vertices of ours to within 1e-4. The teapot spans x from -84.4 (the
+/// handle) to 98.3 (the spout's tip) and y from -39.9 to 49.7, the middle of the 200 x 200 view.
 ///
 ///     (x, y, z) of Newell's  ->  (s·x + 0.831025, s·z - 39.8754, -s·y - 1.10804), s = 28.42544
 ///

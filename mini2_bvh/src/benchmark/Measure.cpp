@@ -1,11 +1,11 @@
 #include "benchmark/Measure.h"
 
-#include <chrono>
 #include <poll.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <chrono>
 
 #include <algorithm>
 #include <cerrno>

@@ -26,13 +26,20 @@ enum class Kind : std::uint8_t { Sphere, Triangle, Quad, User };
 
 const char* errorName(RTCError e) noexcept {
   switch (e) {
-    case RTC_ERROR_NONE: return "RTC_ERROR_NONE";
-    case RTC_ERROR_UNKNOWN: return "RTC_ERROR_UNKNOWN";
-    case RTC_ERROR_INVALID_ARGUMENT: return "RTC_ERROR_INVALID_ARGUMENT";
-    case RTC_ERROR_INVALID_OPERATION: return "RTC_ERROR_INVALID_OPERATION";
-    case RTC_ERROR_OUT_OF_MEMORY: return "RTC_ERROR_OUT_OF_MEMORY";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "RTC_ERROR_UNSUPPORTED_CPU";
-    case RTC_ERROR_CANCELLED: return "RTC_ERROR_CANCELLED";
+    case RTC_ERROR_NONE:
+      return "RTC_ERROR_NONE";
+    case RTC_ERROR_UNKNOWN:
+      return "RTC_ERROR_UNKNOWN";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "RTC_ERROR_INVALID_ARGUMENT";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "RTC_ERROR_INVALID_OPERATION";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "RTC_ERROR_OUT_OF_MEMORY";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "RTC_ERROR_UNSUPPORTED_CPU";
+    case RTC_ERROR_CANCELLED:
+      return "RTC_ERROR_CANCELLED";
   }
   return "an unknown RTCError";
 }
@@ -312,9 +319,8 @@ EmbreeScene::EmbreeScene(Primitives primitives) : impl_(std::make_unique<Impl>(p
 
   if (!spheres.empty()) {
     RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-                                                          spheres.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), spheres.size()));
     m.check("allocating the spheres");
     for (std::size_t k = 0; k < spheres.size(); ++k) {
       const Sphere& s = std::get<Sphere>(shapes[spheres[k]]);
@@ -325,9 +331,8 @@ EmbreeScene::EmbreeScene(Primitives primitives) : impl_(std::make_unique<Impl>(p
   }
   if (!triangles.empty()) {
     RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                          3 * triangles.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * triangles.size()));
     auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
     m.check("allocating the triangles");
@@ -351,9 +356,8 @@ EmbreeScene::EmbreeScene(Primitives primitives) : impl_(std::make_unique<Impl>(p
   }
   if (!quads.empty()) {
     RTCGeometry g = rtcNewGeometry(m.device, RTC_GEOMETRY_TYPE_QUAD);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                          4 * quads.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 4 * quads.size()));
     auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4, 4 * sizeof(unsigned), quads.size()));
     m.check("allocating the quads");
@@ -430,10 +434,18 @@ EmbreeScene::Census EmbreeScene::census() const noexcept {
   for (std::size_t g = 0; g < impl_->kinds.size(); ++g) {
     const auto n = static_cast<std::uint32_t>(impl_->primitiveOf[g].size());
     switch (impl_->kinds[g]) {
-      case Kind::Sphere: c.spheres += n; break;
-      case Kind::Triangle: c.triangles += n; break;
-      case Kind::Quad: c.quads += n; break;
-      case Kind::User: c.user += n; break;
+      case Kind::Sphere:
+        c.spheres += n;
+        break;
+      case Kind::Triangle:
+        c.triangles += n;
+        break;
+      case Kind::Quad:
+        c.quads += n;
+        break;
+      case Kind::User:
+        c.user += n;
+        break;
     }
   }
   return c;

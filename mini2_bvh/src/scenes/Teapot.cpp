@@ -32,11 +32,11 @@ SceneSetup<LitScene> teapotTest(const TeapotOptions& options, int pixels) {
   if (options.floor > 0) {
     // Wound so that both normals are +y: (0,0,2L) x (2L,0,2L) and (2L,0,2L) x (2L,0,0).
     const double l = options.floor, y = kOrigin.y;
-    s.addMesh(std::make_shared<const TriangleMesh>(
-                  std::vector<Point>{Point(-l, y, -l), Point(-l, y, l), Point(l, y, l),
-                                     Point(l, y, -l)},
-                  std::vector<TriangleMesh::Indices>{{0, 1, 2}, {0, 2, 3}}),
-              s.addAppearance(Color(20, 20, 20), Material::course(0.6, 0, 0)));
+    s.addMesh(
+        std::make_shared<const TriangleMesh>(
+            std::vector<Point>{Point(-l, y, -l), Point(-l, y, l), Point(l, y, l), Point(l, y, -l)},
+            std::vector<TriangleMesh::Indices>{{0, 1, 2}, {0, 2, 3}}),
+        s.addAppearance(Color(20, 20, 20), Material::course(0.6, 0, 0)));
   }
   s.addLight(PointLight(Color(500, 500, 500), Point(100, 0, -100)).setKq(0.000001));
   setup.camera = CameraSpec::squareView(Point(0, 0, -1000), Vector(0, 0, 1), 200, 1000, pixels);

@@ -56,8 +56,9 @@ class Primitives {
   /// the meshes' first numbers, one comparison for a scene of one mesh.
   MeshTriangle meshTriangle(std::uint32_t primitive) const noexcept {
     const std::uint32_t k = primitive - shapeCount();
-    const auto after = std::upper_bound(meshes_.begin(), meshes_.end(), k,
-                                        [](std::uint32_t n, const PlacedMesh& m) { return n < m.first; });
+    const auto after =
+        std::upper_bound(meshes_.begin(), meshes_.end(), k,
+                         [](std::uint32_t n, const PlacedMesh& m) { return n < m.first; });
     const auto mesh = static_cast<std::uint32_t>(after - meshes_.begin() - 1);
     return {mesh, k - meshes_[mesh].first};
   }

@@ -59,10 +59,10 @@ std::string animateCommandDetails();
 /// An animation resolved and checked before any frame: the scene and options as a render
 /// request, every frame's camera, which frames are rendered, where they go.
 struct AnimationPlan {
-  RenderRequest request;            ///< the scene with the options applied (output unused)
-  std::vector<CameraSpec> cameras;  ///< frame k's camera, for every k of the path
-  std::vector<int> frames;          ///< the frames to render: all, or --frame's
-  std::filesystem::path directory;  ///< where the frames are written
+  RenderRequest request;             ///< the scene with the options applied (output unused)
+  std::vector<CameraSpec> cameras;   ///< frame k's camera, for every k of the path
+  std::vector<int> frames;           ///< the frames to render: all, or --frame's
+  std::filesystem::path directory;   ///< where the frames are written
   std::optional<std::string> video;  ///< the video's path, when asked
   std::string ffmpeg;                ///< the ffmpeg found on PATH (when a video is asked)
   double fps = 30;

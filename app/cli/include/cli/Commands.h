@@ -22,8 +22,8 @@
 
 #include "primitives/Color.h"
 #include "primitives/Ray.h"
-#include "scenefile/SceneDocument.h"
 #include "scenefile/ModelFile.h"
+#include "scenefile/SceneDocument.h"
 
 namespace rt::cli {
 

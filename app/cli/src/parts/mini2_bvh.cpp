@@ -1,6 +1,6 @@
 // What rt knows of mini project 2: the acceleration structure a render asks for (render.accel,
-// --accel: none, cbr, bvh, bvh4 or grid), built once over the scene's shapes before any ray, the render
-// on a pool of threads handing out square tiles (render.threads, --threads; 0: every core),
+// --accel: none, cbr, bvh, bvh4 or grid), built once over the scene's shapes before any ray, the
+// render on a pool of threads handing out square tiles (render.threads, --threads; 0: every core),
 // `rt bench`, the timing table across stages and accelerations (mini2_bvh/Bench.cpp), and the
 // course's own benchmark scene, TeapotTest, with its later year's bubbles (scenes/Teapot.h).
 #include <CLI/App.hpp>
@@ -77,10 +77,10 @@ void registerCli_mini2_bvh(CliRegistry& registry) {
   registry.makeAccelerator.supply("mini2_bvh", [](const SceneDocument& doc) {
     // A scene of stage 4 has no lights: nothing for light buffers to do.
     const auto* lit = dynamic_cast<const LitScene*>(doc.scene.get());
-    return makeAcceleration(doc.render.accel, doc.scene->geometries,
-                            lit ? std::span<const LightSource>(lit->lights)
-                                : std::span<const LightSource>(),
-                            doc.render.lightBuffers);
+    return makeAcceleration(
+        doc.render.accel, doc.scene->geometries,
+        lit ? std::span<const LightSource>(lit->lights) : std::span<const LightSource>(),
+        doc.render.lightBuffers);
   });
   registry.render.supply("mini2_bvh", [](const RenderJob& job) {
     RenderOptions options;

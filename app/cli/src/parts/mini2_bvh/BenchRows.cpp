@@ -154,8 +154,9 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   const int threads = benchThreads(args);
 
   // The rows: the reference's (the report's four, the wide BVH's and the grid's, or the
-  // lecturer's) with the scene's tracer, then every stage's tracer through the default (wide) BVH (stage 4's debugging views left
-  // out: they do not render the scene's light). A reference's times belong to its scenes only.
+  // lecturer's) with the scene's tracer, then every stage's tracer through the default (wide) BVH
+  // (stage 4's debugging views left out: they do not render the scene's light). A reference's times
+  // belong to its scenes only.
   const Reference reference = referenceOf(args.scene.argument);
   const bool timed = !reference.source.empty();
   const TracerKind& sceneTracer = findTracer(doc.render.tracer);
@@ -184,8 +185,8 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
     if (row.accel == EMBREE_ACCEL) {
       row.countsNodes = false;  // Embree does not report its nodes
 #if RT_HAVE_EMBREE
-      row.note = std::string("Embree ") + EmbreeScene::version() +
-                 ": float tests; t recomputed exactly";
+      row.note =
+          std::string("Embree ") + EmbreeScene::version() + ": float tests; t recomputed exactly";
       if (!accelerations.contains(row.accel))
         accelerations[row.accel] = std::make_unique<EmbreeScene>(doc.scene->geometries);
 #else
@@ -199,11 +200,10 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
       const std::string_view name = std::string_view(row.accel).substr(
           0, row.accel.size() - (buffered ? WITH_LIGHT_BUFFERS.size() : 0));
       const auto* lit = dynamic_cast<const LitScene*>(doc.scene.get());
-      accelerations[row.accel] =
-          makeAcceleration(name, doc.scene->geometries,
-                           lit ? std::span<const LightSource>(lit->lights)
-                               : std::span<const LightSource>(),
-                           buffered);
+      accelerations[row.accel] = makeAcceleration(
+          name, doc.scene->geometries,
+          lit ? std::span<const LightSource>(lit->lights) : std::span<const LightSource>(),
+          buffered);
     }
   }
   std::vector<PlannedRow> rows;

@@ -151,27 +151,25 @@ std::string formatBenchTable(const BenchTable& table, TableFormat format) {
   bool reference = false;
   for (const BenchRow& r : table.rows) reference = reference || r.referenceSeconds.has_value();
   reference = reference && !table.reference.empty();
-  MarkdownTable md({"row", "tracer", "accel", "threads", "wall", "reference", "primary",
-                    "secondary", "shadow", "rays/s", "nodes/ray", "speed-up", "pixels differing",
-                    "note"},
-                   {false, false, false, true, true, true, true, true, true, true, true, true, true,
-                    false});
+  MarkdownTable md(
+      {"row", "tracer", "accel", "threads", "wall", "reference", "primary", "secondary", "shadow",
+       "rays/s", "nodes/ray", "speed-up", "pixels differing", "note"},
+      {false, false, false, true, true, true, true, true, true, true, true, true, true, false});
   bool embree = false;
   for (const BenchRow& r : table.rows) {
     embree = embree || (r.accel == "embree" && r.rendered);
     const auto measured = [&r](std::string text) {
       return r.rendered ? text : std::string(NOT_MEASURED);
     };
-    md.add({r.name, r.tracer, r.accel, std::to_string(r.threads),
-            measured(formatDuration(r.seconds)),
-            r.referenceSeconds ? formatDuration(*r.referenceSeconds) : std::string(),
-            measured(std::to_string(r.counts.primary)),
-            measured(std::to_string(r.counts.secondary)),
-            measured(std::to_string(r.counts.shadow)), measured(fixed(r.raysPerSecond(), 0)),
-            r.countsNodes ? measured(fixed(r.nodesPerRay(), 2)) : std::string(NOT_MEASURED),
-            measured(fixed(table.speedup(r), 2)),
-            r.pixelsDiffering ? std::to_string(*r.pixelsDiffering) : std::string(NOT_MEASURED),
-            r.note});
+    md.add(
+        {r.name, r.tracer, r.accel, std::to_string(r.threads), measured(formatDuration(r.seconds)),
+         r.referenceSeconds ? formatDuration(*r.referenceSeconds) : std::string(),
+         measured(std::to_string(r.counts.primary)), measured(std::to_string(r.counts.secondary)),
+         measured(std::to_string(r.counts.shadow)), measured(fixed(r.raysPerSecond(), 0)),
+         r.countsNodes ? measured(fixed(r.nodesPerRay(), 2)) : std::string(NOT_MEASURED),
+         measured(fixed(table.speedup(r), 2)),
+         r.pixelsDiffering ? std::to_string(*r.pixelsDiffering) : std::string(NOT_MEASURED),
+         r.note});
   }
   return "rt bench " + table.scene + ": " + std::to_string(table.width) + "x" +
          std::to_string(table.height) + ", " + std::to_string(table.threads) +
