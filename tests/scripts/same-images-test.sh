@@ -24,22 +24,8 @@ chmod +x "$work/same" "$work/seeded"
 scenes="$("$rt" list | grep -c '^[a-z]')"
 images=$((scenes + 3))  # and the galaxy's three other views
 
-failures=0
-# check NAME EXPECTED_EXIT PATTERN ARG...: runs the script, its exit code and a line of its output.
-check() {
-  local name="$1" want_code="$2" pattern="$3"
-  shift 3
-  local out code
-  out="$(bash "$script" "$@" 2>&1)"
-  code=$?
-  if [[ $code -eq $want_code ]] && grep -qE -- "$pattern" <<<"$out"; then
-    echo "ok   $name"
-  else
-    echo "FAIL $name: exit $code (expected $want_code), output:"
-    printf '%s\n' "$out" | tail -n 15
-    failures=$((failures + 1))
-  fi
-}
+# shellcheck source-path=SCRIPTDIR source=cases.sh
+source "$(dirname "${BASH_SOURCE[0]}")/cases.sh"
 
 check "the same build twice: every image the same" 0 \
   "^all $images images are the same bytes in the 2 builds" --width 16 "$rt" "$work/same"
@@ -53,5 +39,4 @@ check "one build is not a comparison" 2 "give at least two rt executables" "$rt"
 check "a missing executable" 2 "not an executable: $work/none" "$rt" "$work/none"
 check "a bad width" 2 "--width needs a positive integer" --width 0 "$rt" "$rt"
 
-[[ $failures -eq 0 ]] || { echo "$failures case(s) failed"; exit 1; }
-echo "all cases passed"
+finish
