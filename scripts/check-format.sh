@@ -5,13 +5,13 @@
 #
 # Without FILE it checks every *.cpp and *.h file git tracks (or, outside a git checkout, every
 # such file below the repository's root but the build trees). Prints each file that clang-format
-# would change, with the first lines of the change, and how to fix it. The course's solution
-# markers (// BEGIN SOLUTION..., // END SOLUTION) are left to the line as .clang-format says
-# (CommentPragmas: reflowed, a hint would be cut), so this script checks their rule itself: a
-# marker line within the 100 columns, so that the handout's stub fits too. The layout depends on
-# clang-format's version: CI checks with Debian's (clang-format 14); with another version a file
-# may be reported that CI accepts. Exit codes: 0 all laid out, 1 some not, 2 no clang-format or
-# a FILE not found. CLANG_FORMAT names another clang-format executable.
+# would change, with the first lines of the change, and how to fix it. clang-format never
+# reflows the course's solution markers (// BEGIN SOLUTION..., // END SOLUTION: CommentPragmas in
+# .clang-format, since a reflowed marker would cut its hint), so this script checks their rule
+# itself: a marker line within the 100 columns, so that the handout's stub fits too. The layout
+# depends on clang-format's version: CI checks with Debian's (clang-format 14); with another
+# version a file may be reported that CI accepts. Exit codes: 0 all laid out, 1 some not, 2 no
+# clang-format or a FILE not found. CLANG_FORMAT names another clang-format executable.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
