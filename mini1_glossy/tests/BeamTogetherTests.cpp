@@ -8,11 +8,11 @@
 #include <optional>
 #include <span>
 
-#include "SameBits.h"
 #include "camera/Camera.h"
 #include "geometries/Plane.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <numbers>
 
-#include "SameBits.h"
 #include "camera/Camera.h"
 #include "geometries/Plane.h"
 #include "geometries/Polygon.h"
 #include "glossy/BeamTracer.h"
 #include "reflections/CourseScenes.h"
 #include "support/AllocationCounter.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {

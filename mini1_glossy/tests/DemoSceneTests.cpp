@@ -13,12 +13,12 @@
 #include <variant>
 #include <vector>
 
-#include "SameBits.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/DemoScenes.h"
 #include "glossy/DemoTable.h"
 #include "glossy/RayBeam.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
@@ -157,15 +157,23 @@ TEST(DemoScenesTests, parameters) {
   }
   EXPECT_EQ(1, glossy);
   EXPECT_EQ(1, frosted);
-  // TC03: the other scenes' parameters likewise
-  for (const Appearance& a : demo::glossySpheres({.beamGrid = 3}).scene.appearances)
-    if (a.material.reflectedBeam.radius > 0) {
-      EXPECT_EQ(3, a.material.reflectedBeam.grid);
-    }
-  for (const Appearance& a : demo::frostedGlass({.beamGrid = 5}).scene.appearances)
-    if (a.material.refractedBeam.radius > 0) {
-      EXPECT_EQ(5, a.material.refractedBeam.grid);
-    }
+  // TC03: the other scenes' parameters likewise: the three glossy spheres (radii 0.03, 0.08,
+  // 0.2) and the two frosted panes (0.05, 0.15) take the grid, and no other beam is there
+  int glossyBeams = 0, gridded = 0;
+  for (const Appearance& a : demo::glossySpheres({.beamGrid = 3}).scene.appearances) {
+    glossyBeams += a.material.reflectedBeam.radius > 0 ? 1 : 0;
+    gridded += a.material.reflectedBeam.radius > 0 && a.material.reflectedBeam.grid == 3 ? 1 : 0;
+  }
+  EXPECT_EQ(3, glossyBeams);
+  EXPECT_EQ(3, gridded);
+  int frostedBeams = 0;
+  gridded = 0;
+  for (const Appearance& a : demo::frostedGlass({.beamGrid = 5}).scene.appearances) {
+    frostedBeams += a.material.refractedBeam.radius > 0 ? 1 : 0;
+    gridded += a.material.refractedBeam.radius > 0 && a.material.refractedBeam.grid == 5 ? 1 : 0;
+  }
+  EXPECT_EQ(2, frostedBeams);
+  EXPECT_EQ(2, gridded);
   EXPECT_EQ(
       4,
       std::get<PointLight>(demo::softShadows({.shadowSamples = 4}).scene.lights[0]).shadowSamples);

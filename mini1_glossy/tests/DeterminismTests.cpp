@@ -5,11 +5,11 @@
 
 #include <memory>
 
-#include "SameBits.h"
 #include "camera/Camera.h"
 #include "glossy/BeamTracer.h"
 #include "glossy/Galaxy.h"
 #include "glossy/Samplers.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {

@@ -2,15 +2,19 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <string>
 #include <variant>
 
 #include "camera/Camera.h"
 #include "glossy/Galaxy.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
+
+using test::sameBits;
 
 int countSpheres(const LitScene& s) {
   int n = 0;
@@ -23,11 +27,12 @@ TEST(GalaxyTests, theSeedsLayout) {
   const LitScene& s = g.scene;
   // ============ Equivalence Partitions Tests ==============
   // TC01: 1 floor + 12 pedestal faces + 6 glass faces + 8 bars x 6 faces = 67 other shapes;
-  // 18 arms x 50 stars = 900, the core and its halo, and about 135 suns (3 arms x 50 x 90%)
+  // 18 arms x 50 stars = 900, the core and its halo, and 138 suns: the positions of the 3 sun
+  // arms (150) whose first draw after the star's three is below 0.9. The draws come from
+  // RandomStream (SplitMix64, specified to the bit), so the count is the same everywhere.
   const int spheres = countSpheres(s);
   EXPECT_EQ(67, static_cast<int>(s.geometries.size()) - spheres);
-  EXPECT_GE(spheres - 902, 115);
-  EXPECT_LE(spheres - 902, 150);
+  EXPECT_EQ(902 + 138, spheres);
   // TC02: three spot lights, no ambient light, black background
   EXPECT_EQ(3u, s.lights.size());
   for (const LightSource& l : s.lights) EXPECT_TRUE(std::holds_alternative<SpotLight>(l));
@@ -98,23 +103,28 @@ TEST(GalaxyTests, parameters) {
   other.seed = 2;
   const LitScene c = galaxy(other).scene;
   ASSERT_EQ(a.geometries.size(), b.geometries.size());
-  const Point& a80 = std::get<Sphere>(a.geometries[80]).center();
-  EXPECT_EQ(a80.xyz(), std::get<Sphere>(b.geometries[80]).center().xyz());
-  EXPECT_NE(a80.x(), std::get<Sphere>(c.geometries[80]).center().x());
-  // TC02: arms and positions: 7 arms of 10 (arm 4 holds suns): 6 x 10 stars
+  for (std::uint32_t k = 0; k < a.geometries.size(); ++k) {
+    const auto* sa = std::get_if<Sphere>(&a.geometries[k]);
+    const auto* sb = std::get_if<Sphere>(&b.geometries[k]);
+    ASSERT_EQ(sa == nullptr, sb == nullptr) << k;
+    if (sa == nullptr) continue;
+    EXPECT_TRUE(sameBits(sa->center(), sb->center())) << k;
+    EXPECT_TRUE(sameBits(sa->radius(), sb->radius())) << k;
+  }
+  EXPECT_NE(std::get<Sphere>(a.geometries[80]).center().x(),
+            std::get<Sphere>(c.geometries[80]).center().x());
+  // TC02: arms and positions: 7 arms of 10 (arm 4 holds suns): 6 x 10 stars, the core and its
+  // halo, and 9 suns on arm 4's 10 positions
   GalaxyParams small;
   small.arms = 7;
   small.perArm = 10;
-  const int smallSpheres = countSpheres(galaxy(small).scene);
-  EXPECT_GE(smallSpheres, 60 + 2);
-  EXPECT_LE(smallSpheres, 60 + 2 + 10);
+  EXPECT_EQ(60 + 2 + 9, countSpheres(galaxy(small).scene));
   // TC03: stars scales the galaxy: 10^4 stars on 21 arms: 476 positions per arm
   GalaxyParams many;
   many.stars = 10000;
   EXPECT_EQ(476, many.positionsPerArm());
-  const int manySpheres = countSpheres(galaxy(many).scene);
-  EXPECT_GE(manySpheres, 18 * 476);
-  EXPECT_LE(manySpheres, 21 * 476 + 2);
+  // 18 arms of stars, the core and its halo, and 1263 suns on the 3 sun arms' 1428 positions
+  EXPECT_EQ(18 * 476 + 2 + 1263, countSpheres(galaxy(many).scene));
   // TC04: no diffusion: no blur anywhere
   GalaxyParams clear;
   clear.diffusion = false;

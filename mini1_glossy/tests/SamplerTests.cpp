@@ -179,20 +179,25 @@ TEST(AdaptiveSamplerTests, cornersSubdivisionAndReuse) {
   const AdaptiveSampler sampler(0.1, 3, 4);
   EXPECT_EQ(Color(1, 0, 0), sampler.pixelColor(camera, uniform, 5, 5, counts));
   EXPECT_EQ(4u, uniform.points.size());
-  // TC02: an edge through the pixel (x = 5.3): subdivided where the corners differ, down to the
-  // depth limit along the edge only; every traced point is a lattice point of the pixel, traced
-  // once (corners reused), and the result is the lattice estimate of 0.3
+  // TC02: an edge through the pixel (x = 5.3, lattice column 2.4 of 0..8): subdivided where the
+  // corners differ, down to the depth limit along the edge only; every traced point is a lattice
+  // point of the pixel, traced once (corners reused). By hand: the right half is black (0); in
+  // each left quarter (columns 0..4) the squares of side 2 over columns 0..2 are red (1) and those
+  // over 2..4 split into squares of side 1, half red over 2..3 (0.5) and black over 3..4, so 0.25;
+  // a left quarter is (1 + 1 + 0.25 + 0.25) / 4 = 0.625 and the pixel 0.3125. The points: column
+  // 0 at rows 0, 2, .., 8 (5), columns 2, 3 and 4 at every row (27), column 8 at 0, 4, 8 (3): 35
+  // of the 9 x 9 lattice.
   const PointTracer edge(scene, 16, 5.3);
   const Color c = sampler.pixelColor(camera, edge, 5, 5, counts);
   std::set<std::pair<double, double>> distinct(edge.points.begin(), edge.points.end());
   EXPECT_EQ(edge.points.size(), distinct.size());
-  EXPECT_GT(edge.points.size(), 4u);
-  EXPECT_LT(edge.points.size(), 81u);  // fewer than the whole 9 x 9 lattice of depth 3
+  EXPECT_EQ(35u, edge.points.size());
   for (const auto& [px, py] : edge.points) {
     EXPECT_NEAR(0, std::fmod((px - 5) * 8, 1.0), 1e-9);
     EXPECT_NEAR(0, std::fmod((py - 5) * 8, 1.0), 1e-9);
   }
-  EXPECT_NEAR(0.3, c.r(), 1.0 / 8);
+  EXPECT_EQ(0.3125, c.r());
+  EXPECT_EQ(0, c.g());
   // =============== Boundary Values Tests ==================
   // TC11: depth limit 0: the four corners only, whatever they are
   const PointTracer edge0(scene, 16, 5.3);

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <set>
@@ -39,11 +38,13 @@
 #include "support/AllocationCounter.h"
 
 #include "RandomScenes.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
 
 using test::Random;
+using test::sameBits;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
@@ -341,10 +342,6 @@ std::string compareCrossings(const Geometries& shapes, const Crossings& scan, co
              describe(gotBefore);
   }
   return "";
-}
-
-bool sameBits(const Double3& a, const Double3& b) {
-  return std::memcmp(&a, &b, sizeof(Double3)) == 0;
 }
 
 /// The entry of primitive i in a list, or null.

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <cstring>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -27,16 +26,14 @@
 #include "parallel/TilePool.h"
 #include "reflections/CourseScenes.h"
 #include "support/AllocationCounter.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
 
+using test::sameBits;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
-
-bool sameBits(const Color& a, const Color& b) {
-  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
-}
 
 /// The first pixel whose bits differ, as "x,y", or "" when the images are the same bits.
 std::string firstDifference(const Image& a, const Image& b) {

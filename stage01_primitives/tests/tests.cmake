@@ -10,7 +10,8 @@ set(STAGE_TESTS
     tests/RandomTests.cpp)
 
 # The tests' shared helpers, included as "support/...": rt_test_support, the headers (the portable
-# random numbers of the tests' random scenes, tests/support/TestRandom.h); and the allocation
+# random numbers of the tests' random scenes, tests/support/TestRandom.h, and the bit-for-bit
+# comparisons, tests/support/SameBits.h); and the allocation
 # counter every stage's "no allocation per ray" test links (an object library, so that its
 # replacement of the global operator new is always linked in; see tests/support/AllocationCounter.h).
 # rt_test_support exists without RT_BUILD_TESTS too: mini2's benchmark draws the tests' scenes.

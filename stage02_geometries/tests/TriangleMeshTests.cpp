@@ -15,10 +15,12 @@
 #include "geometries/TriangleMesh.h"
 
 #include "ExpectVector.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
 
+using test::sameBits;
 using ::testing::AllOf;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
@@ -44,11 +46,6 @@ std::string messageOf(std::vector<Point> v, std::vector<Indices> t, std::vector<
   }
   ADD_FAILURE() << "the mesh was accepted";
   return {};
-}
-
-/// True when a and b are the same doubles, component by component (not the course's equality).
-bool sameBits(const Vector& a, const Vector& b) {
-  return a.x() == b.x() && a.y() == b.y() && a.z() == b.z();
 }
 
 TEST(TriangleMeshTests, constructor) {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "geometries/Triangle.h"
+#include "support/SameBits.h"
 
 #include "ExpectVector.h"
 
@@ -13,6 +14,7 @@ namespace rt {
 namespace {
 
 using test::expectVector;
+using test::sameBits;
 
 TEST(TriangleTests, constructor) {
   // ============ Equivalence Partitions Tests ==============
@@ -54,9 +56,9 @@ TEST(TriangleTests, planeIsTheVerticesPlaneBitForBit) {
                                    std::array{Point(0, 0, 1), Point(1, 0, 0), Point(0, 1, 0)}}) {
     const Triangle t(p1, p2, p3);
     const Plane expected(p1, p2, p3);
-    EXPECT_EQ(t.plane().point(), p1);
-    EXPECT_EQ(t.plane().normal(), expected.normal());
-    EXPECT_EQ(t.normal(), expected.normal());
+    EXPECT_TRUE(sameBits(t.plane().point(), p1));
+    EXPECT_TRUE(sameBits(t.plane().normal(), expected.normal()));
+    EXPECT_TRUE(sameBits(t.normal(), expected.normal()));
   }
   // TC03: the triangle is its three points and a normal, no more (the variant's size)
   EXPECT_EQ(4 * sizeof(Point), sizeof(Triangle));

@@ -26,7 +26,11 @@ const Double3& controlPoint(std::size_t patch, int i, int j) {
   return Data::kControlPoints[Data::kPatches[patch][4 * i + j] - 1];
 }
 
-bool sameBits(const Double3& a, const Double3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+/// The same doubles, component by component: exact, but 0 and -0 count as equal (the mirrored
+/// patches' zeros are -0 where the data's are 0), unlike test::sameBits.
+bool sameDoubles(const Double3& a, const Double3& b) {
+  return a.x == b.x && a.y == b.y && a.z == b.z;
+}
 
 struct Box {
   Double3 lo{INFINITY}, hi{-INFINITY};
@@ -61,8 +65,8 @@ TEST(UtahTeapotTests, data) {
   std::vector<Point> points;
   for (const Double3& p : Data::kControlPoints) points.emplace_back(p);
   const Box box = boxOf(points);
-  EXPECT_TRUE(sameBits(box.lo, Double3(-3, -2, 0)));
-  EXPECT_TRUE(sameBits(box.hi, Double3(3.525, 2, 3.15)));
+  EXPECT_TRUE(sameDoubles(box.lo, Double3(-3, -2, 0)));
+  EXPECT_TRUE(sameDoubles(box.hi, Double3(3.525, 2, 3.15)));
 }
 
 TEST(UtahTeapotTests, dataSymmetries) {
@@ -83,7 +87,7 @@ TEST(UtahTeapotTests, dataSymmetries) {
       const std::size_t next = ring.first + (k + 1) % ring.count;
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
-          EXPECT_TRUE(sameBits(controlPoint(next, i, j), ring.turn(controlPoint(patch, i, j))))
+          EXPECT_TRUE(sameDoubles(controlPoint(next, i, j), ring.turn(controlPoint(patch, i, j))))
               << "patch " << patch << " P(" << i << "," << j << ")";
     }
   }
@@ -93,7 +97,7 @@ TEST(UtahTeapotTests, dataSymmetries) {
     for (int i = 0; i < 4; ++i) {
       for (int j = 0; j < 4; ++j) {
         const Double3& p = controlPoint(patch, i, 3 - j);
-        EXPECT_TRUE(sameBits(controlPoint(patch + 1, i, j), Double3(p.x, -p.y, p.z)))
+        EXPECT_TRUE(sameDoubles(controlPoint(patch + 1, i, j), Double3(p.x, -p.y, p.z)))
             << "patch " << patch + 1 << " P(" << i << "," << j << ")";
       }
     }
@@ -153,7 +157,7 @@ TEST(UtahTeapotTests, boundingBox) {
   // column (3.3, 3.525, 3.45, 3.2) at v = 1/2, weights (1, 3, 3, 1)/8, is 3.428125; 3.525 and
   // 3.45 are not binary fractions, so that sum is exact only to rounding: within 4 ulps.
   const Box box = boxOf(utahTeapot(4).vertices());
-  EXPECT_TRUE(sameBits(box.lo, Double3(-3, -2, 0)));
+  EXPECT_TRUE(sameDoubles(box.lo, Double3(-3, -2, 0)));
   EXPECT_EQ(box.hi.y, 2.0);
   EXPECT_EQ(box.hi.z, 3.15);
   EXPECT_DOUBLE_EQ(box.hi.x, 3.428125);
@@ -179,7 +183,8 @@ TEST(UtahTeapotTests, normals) {
       EXPECT_GT(mesh.flatNormal(t).dot(mesh.shadingNormal(t, 1.0 / 3, 1.0 / 3)), 0.0)
           << "detail " << d << " triangle " << t;
       const std::array<Point, 3> c = mesh.corners(t);
-      EXPECT_TRUE(sameBits(mesh.flatNormal(t).xyz(), Triangle(c[0], c[1], c[2]).normal(c[0]).xyz()))
+      EXPECT_TRUE(
+          sameDoubles(mesh.flatNormal(t).xyz(), Triangle(c[0], c[1], c[2]).normal(c[0]).xyz()))
           << "detail " << d << " triangle " << t;
     }
   }
@@ -214,8 +219,8 @@ TEST(UtahTeapotTests, deterministic) {
   ASSERT_EQ(a.vertexCount(), b.vertexCount());
   EXPECT_EQ(a.triangles(), b.triangles());
   for (std::size_t i = 0; i < a.vertexCount(); ++i) {
-    EXPECT_TRUE(sameBits(a.vertices()[i].xyz(), b.vertices()[i].xyz())) << "vertex " << i;
-    EXPECT_TRUE(sameBits(a.normals()[i].xyz(), b.normals()[i].xyz())) << "normal " << i;
+    EXPECT_TRUE(sameDoubles(a.vertices()[i].xyz(), b.vertices()[i].xyz())) << "vertex " << i;
+    EXPECT_TRUE(sameDoubles(a.normals()[i].xyz(), b.normals()[i].xyz())) << "normal " << i;
   }
 }
 

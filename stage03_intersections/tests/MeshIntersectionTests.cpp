@@ -20,17 +20,17 @@
 #include "intersections/Geometries.h"
 #include "intersections/Intersect.h"
 #include "intersections/Primitives.h"
+#include "support/SameBits.h"
 #include "support/TestRandom.h"
 
 namespace rt {
 namespace {
 
+using test::sameBits;
 using ::testing::ThrowsMessage;
 using Indices = TriangleMesh::Indices;
 
 /// True when a and b are the same doubles, component by component.
-bool sameBits(const Double3& a, const Double3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
 /// Uniform numbers, points and directions: stream (x, y) of seed 15 (support/TestRandom.h).
 class Draw : public test::TestRandom {
  public:

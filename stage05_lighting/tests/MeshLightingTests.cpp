@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -18,11 +17,13 @@
 #include "geometries/UtahTeapot.h"
 #include "lighting/LitScene.h"
 #include "lighting/PhongTracer.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
 
 using test::colorNear;
+using test::sameBits;
 using test::thrownMessage;
 using ::testing::ThrowsMessage;
 using Indices = TriangleMesh::Indices;
@@ -40,11 +41,6 @@ Material shiny() {
   m.kS = Double3(0.4);
   m.shininess = 20;
   return m;
-}
-
-/// The same colour, bit for bit.
-bool sameBits(const Color& a, const Color& b) {
-  return std::memcmp(&a.rgb(), &b.rgb(), sizeof(Double3)) == 0;
 }
 
 TEST(MeshLightingTests, addMesh) {

@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -24,6 +23,7 @@
 #include "lighting/LitScene.h"
 #include "lighting/Material.h"
 #include "lighting/PhongTracer.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
@@ -31,6 +31,7 @@ namespace {
 using test::colorNear;
 using test::EPS;
 using test::invalidArgumentMessage;
+using test::sameBits;
 using test::thrownMessage;
 using test::tripleNear;
 using ::testing::AllOf;
@@ -308,8 +309,6 @@ class RecordingTracer : public ExposedPhong {
   mutable std::vector<std::uint32_t> lights;
   mutable std::vector<LightSample> samples;
 };
-
-bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // localEffects works each light's sample out one light ahead (while the light before it is
 // shaded): each light must still be shaded with its own sample, the lights whose sample does not

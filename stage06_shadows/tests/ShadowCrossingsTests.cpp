@@ -20,9 +20,12 @@
 #include "lighting/Material.h"
 #include "primitives/Double3.h"
 #include "shadows/ShadowCrossings.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
+
+using test::sameBits;
 
 constexpr double CUT_OFF = 0.001;
 constexpr double T_MIN = 1e-6;
@@ -42,7 +45,6 @@ LitScene withKT(const std::vector<Double3>& kTs) {
   return s;
 }
 
-bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 std::array<std::uint64_t, 3> bitsOf(const Double3& a) {
   std::array<std::uint64_t, 3> bits;
   std::memcpy(bits.data(), &a, sizeof a);

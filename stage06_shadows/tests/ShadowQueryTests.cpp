@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -22,10 +21,13 @@
 #include "primitives/Double3.h"
 #include "primitives/Ray.h"
 #include "shadows/ShadowQuery.h"
+#include "support/SameBits.h"
 #include "support/TestRandom.h"
 
 namespace rt {
 namespace {
+
+using test::sameBits;
 
 constexpr double CUT_OFF = 0.001;
 
@@ -95,8 +97,6 @@ class ListedHits final : public Intersectable {
  private:
   std::vector<Hit> hits_;
 };
-
-bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 TEST(ShadowQueryTests, blockers) {
   // ============ Equivalence Partitions Tests ==============

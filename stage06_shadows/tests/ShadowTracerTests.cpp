@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "RecordingShapes.h"
@@ -20,9 +19,12 @@
 #include "primitives/Color.h"
 #include "shadows/RayOffset.h"
 #include "shadows/ShadowTracer.h"
+#include "support/SameBits.h"
 
 namespace rt {
 namespace {
+
+using test::sameBits;
 
 /// Makes the protected parts of the tracer reachable from the tests.
 struct Probe : ShadowTracer {
@@ -199,9 +201,6 @@ TEST(ShadowTracerTests, courseDeltaLeaksAtSmallScale) {
   EXPECT_EQ(Color(20, 30, 40), scaled.traceRay(primary));  // shadowed, as it should be
   EXPECT_EQ(RayOffset::course(), course.rayOffset());
 }
-
-bool sameBits(const Double3& a, const Double3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool sameBits(const Color& a, const Color& b) { return sameBits(a.rgb(), b.rgb()); }
 
 /// The colour at (x,0,0) seen as shade() sees it, with the rays it cast counted in counts.
 Color shadeCounted(const RayTracer& tracer, double x, RayCounts& counts) {

@@ -49,6 +49,15 @@ std::string ambientWarning(const std::string& chosenBy) {
   return head;  // a cut between: the tracers it has follow
 }
 
+/// A render that went through without a warning: exit code 0, no "rt: warning", the final
+/// line naming the image, and the image written.
+void expectRenderedWithoutWarning(const Outcome& r, const std::string& image) {
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rt: wrote " + image + ":"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(image)) << image;
+}
+
 TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
   const std::string dir = test::freshTestDirectory("warnings-ambient");
   const std::string dark = writeText(dir + "/dark.json", sphereScene("{}"));
@@ -67,12 +76,13 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
   const std::string zeroKa =
       writeText(dir + "/zero-ka.json", sphereScene(R"({"color": [255, 255, 255], "kA": 0})"));
   r = run({"render", zeroKa, "--tracer", "ambient", "-o", dir + "/c.png"});
+  EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(r.err.rfind(ambientWarning("--tracer ambient"), 0), 0u) << r.err;
   // TC04: an ambient light: no warning
   const std::string lit =
       writeText(dir + "/lit.json", sphereScene(R"({"color": [255, 255, 255], "kA": 0.1})"));
   r = run({"render", lit, "--tracer", "ambient", "-o", dir + "/d.png"});
-  EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
+  expectRenderedWithoutWarning(r, dir + "/d.png");
   // TC05: --quiet keeps the warning (and the final line); --silent: nothing but errors
   r = run({"render", dark, "--tracer", "ambient", "-o", dir + "/e.png", "--quiet"});
   EXPECT_EQ(r.code, 0);
@@ -87,7 +97,7 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
   // TC07: another tracer (from stage 5 on) shows the lights: no warning
   if (hasTracer("phong")) {
     r = run({"render", dark, "--tracer", "phong", "-o", dir + "/f.png"});
-    EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
+    expectRenderedWithoutWarning(r, dir + "/f.png");
   }
   // TC11: a scene without shapes shows only its background: no warning
   const std::string empty =
@@ -95,7 +105,7 @@ TEST(SceneWarningTests, ambientTracerWithoutAmbientLight) {
                 R"({"camera": {"location": [0, 0, 10], "target": [0, 0, 0], "vpDistance": 10,
           "vpSize": [4, 4], "resolution": [4, 4]}})");
   r = run({"render", empty, "--tracer", "ambient", "-o", dir + "/g.png"});
-  EXPECT_EQ(r.err.find("rt: warning"), std::string::npos) << r.err;
+  expectRenderedWithoutWarning(r, dir + "/g.png");
 }
 
 TEST(SceneWarningTests, glassFacesWoundBothWays) {
