@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,12 @@ std::string writeImage(const std::string& path, int nX, int nY,
   for (const Changed& c : changed) image.setPixel(c.x, c.y, c.color);
   PngImageWriter().write(image, path);
   return path;
+}
+
+/// The whole content of the file at path.
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 /// The images of most cases: 10 x 10, and the same with pixel (2, 1)'s red channel 3 higher.
@@ -144,6 +151,23 @@ TEST(CompareTests, imagesThatCannotBeCompared) {
   EXPECT_EQ(r.err, "rt: missing B for rt compare (see rt compare --help)\n");
   // TC08: compareImages itself refuses different sizes, naming both
   EXPECT_THROW((void)compareImages(readPng(a), readPng(tall), 0), std::invalid_argument);
+  // TC09: --diff naming A or B (however spelt) is refused before anything is written: both
+  // images stay as they were
+  const std::string b = writeImage(dir + "/b.png", 10, 10, {{0, 0, Color(0, 0, 0)}});
+  const std::string bytesA = fileBytes(a), bytesB = fileBytes(b);
+  r = run({"compare", a, b, "--diff", a});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "rt: --diff: '" + a + "' is A ('" + a +
+                       "'): the difference map would overwrite an image it compares; give "
+                       "another file\n");
+  r = run({"compare", a, b, "--diff", dir + "/./b.png"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "rt: --diff: '" + dir + "/./b.png' is B ('" + b +
+                       "'): the difference map would overwrite an image it compares; give "
+                       "another file\n");
+  EXPECT_EQ(fileBytes(a), bytesA);
+  EXPECT_EQ(fileBytes(b), bytesB);
 }
 
 TEST(CompareTests, differenceHeatMap) {

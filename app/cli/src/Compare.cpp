@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <utility>
 
 #include "CommandRegistration.h"
 
@@ -58,9 +60,22 @@ struct CompareArgs {
   int tolerance = 0;
 };
 
+/// Whether x and y name one existing file, whatever their spelling ("./a.png", a link).
+bool sameFile(const std::string& x, const std::string& y) {
+  std::error_code ec;
+  return std::filesystem::equivalent(x, y, ec) && !ec;
+}
+
 int compare(const CompareArgs& args, const Io& io) {
   // The output first, as rt render does: a mistake costs no work.
-  if (args.diff) checkOutputWritable(*args.diff, PNG_IMAGE, "--diff");
+  if (args.diff) {
+    checkOutputWritable(*args.diff, PNG_IMAGE, "--diff");
+    for (const auto& [input, name] : {std::pair{&args.a, "A"}, std::pair{&args.b, "B"}})
+      if (sameFile(*args.diff, *input))
+        throw UsageError("--diff: '" + *args.diff + "' is " + name + " ('" + *input +
+                         "'): the difference map would overwrite an image it compares; give "
+                         "another file");
+  }
   const Rgb8Image a = readImageArgument(args.a, "A");
   const Rgb8Image b = readImageArgument(args.b, "B");
   const auto size = [](const Rgb8Image& image) {
