@@ -218,6 +218,18 @@ TEST(RtAnimate, RefusesAPathItCannotMakeBeforeAnyFrame) {
   const test::RtResult frame = runRt(
       {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--frame", "3", "-o", dir + "/f"});
   EXPECT_EQ(frame.err, "rt: --frame: expected a frame from 0 to 2 (--frames 3), got 3\n");
+  // Numbers: not a number, in rt's words; out of range, the value as given
+  const test::RtResult word =
+      runRt({"animate", "galaxy", "--orbit", "abc", "--frames", "3", "-o", dir + "/f"});
+  EXPECT_EQ(word.exitCode, 2);
+  EXPECT_EQ(word.err, "rt: --orbit: expected a number, got 'abc'\n");
+  const test::RtResult fpsWord = runRt(
+      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps", "1e400", "-o", dir + "/f"});
+  EXPECT_EQ(fpsWord.err, "rt: --fps: expected a number, got '1e400'\n");
+  const test::RtResult fps = runRt(
+      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps", "0", "-o", dir + "/f"});
+  EXPECT_EQ(fps.exitCode, 2);
+  EXPECT_EQ(fps.err, "rt: --fps: expected a number of frames per second in (0, 1000], got 0\n");
   EXPECT_FALSE(std::filesystem::exists(dir + "/f"));
 }
 
@@ -259,6 +271,25 @@ TEST(RtAnimate, TheVideoHoldsEveryFrameAtTheFramesSize) {
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     files += entry.is_regular_file();
   EXPECT_EQ(files, 1);
+}
+
+TEST(RtAnimate, TheVideoHoldsThisRunsFramesOnly) {
+  const std::optional<std::string> ffprobe = findOnPath("ffprobe");
+  if (!findOnPath("ffmpeg") || !ffprobe)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";
+  const std::string dir = freshDirectory("animate-video-fewer");
+  // An earlier run left 5 frames in the folder; this one renders 2 into it: its video holds 2.
+  test::RtResult r = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "5", "--width", "32",
+                            "-o", dir + "/f", "-q"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "2", "--width", "32", "-o",
+             dir + "/f", "--video", dir + "/v.mp4", "-q"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const test::RtResult probe =
+      runProgram({*ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
+                  "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", dir + "/v.mp4"});
+  ASSERT_EQ(probe.exitCode, 0) << probe.err;
+  EXPECT_EQ(probe.out, "2\n");
 }
 
 }  // namespace

@@ -119,7 +119,8 @@ void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
                     "which stage's tracer renders it (default: the scene's)");
   addOptional(command, "--orbit", into.orbit,
               "orbit the camera's target by DEGREES over the frames (negative: the other way)",
-              "DEGREES");
+              "DEGREES")
+      ->check(numberValidator());
   addOptional(command, "--through", into.through,
               "a path through the scene's named views, in this order (all: every view)",
               "VIEW,VIEW,...");
@@ -135,7 +136,8 @@ void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
   addOptional(command, "--video", into.video,
               "encode the frames into FILE.mp4 with ffmpeg (when it is installed)", "FILE.mp4");
   command.add_option("--fps", into.fps, "the video's frames per second (default: 30)")
-      ->type_name("F");
+      ->type_name("F")
+      ->check(numberValidator());
   addGridLinesOption(command, into.gridLines);
   command.add_flag("-q,--quiet", into.quiet, "no progress; only the final timing line");
   command.add_flag("-s,--silent", into.silent, "print nothing but errors");

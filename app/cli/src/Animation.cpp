@@ -19,6 +19,7 @@
 #include "cli/CommandLine.h"
 #include "cli/Commands.h"
 #include "common/NearestName.h"
+#include "primitives/Double3.h"
 
 namespace rt::cli {
 
@@ -181,7 +182,7 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
                                 : "give a camera path: --orbit DEGREES or --through VIEW,VIEW,...");
   if (args.orbit && !std::isfinite(*args.orbit))
     throw UsageError("--orbit: expected a finite number of degrees, got " +
-                     std::to_string(*args.orbit));
+                     formatNumber(*args.orbit));
   if (args.frame && (*args.frame < 0 || *args.frame >= args.frames))
     throw UsageError("--frame: expected a frame from 0 to " + std::to_string(args.frames - 1) +
                      " (--frames " + std::to_string(args.frames) + "), got " +
@@ -190,7 +191,7 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
     throw UsageError("--video and --frame: a video needs every frame; render it without --frame");
   if (!(args.fps > 0) || !std::isfinite(args.fps) || args.fps > 1000)
     throw UsageError("--fps: expected a number of frames per second in (0, 1000], got " +
-                     std::to_string(args.fps));
+                     formatNumber(args.fps));
 
   AnimationPlan plan{
       resolveRenderRequest(args.scene, {.writesImage = false, .makesImage = true, .renders = true}),
@@ -286,7 +287,8 @@ void encodeVideo(const AnimationPlan& plan) {
   fps.precision(17);
   fps << plan.fps;
   // yuv420p, which every player reads, needs an even width and height: odd ones are padded.
-  // An option and its value a line.
+  // The frames from 0 and exactly as many as this run rendered: frames an earlier run with more
+  // of them left in the folder stay out. An option and its value a line.
   // clang-format off
   std::vector<std::string> argv{plan.ffmpeg,
                                 "-hide_banner",
@@ -294,7 +296,9 @@ void encodeVideo(const AnimationPlan& plan) {
                                 "-nostdin",
                                 "-y",
                                 "-framerate", fps.str(),
+                                "-start_number", "0",
                                 "-i", pattern,
+                                "-frames:v", std::to_string(plan.frames.size()),
                                 "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2",
                                 "-c:v", "libx264",
                                 "-pix_fmt", "yuv420p",

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <string_view>
+#include <system_error>
 
 // The whole of CLI11 here: constructing a CLI::App needs its formatter and its config parser.
 #include <CLI/CLI.hpp>
@@ -338,6 +341,19 @@ CLI::Validator integerValidator(int lo, int hi) {
         return {};
       },
       "");  // no description: CLI11 would append it to the value's name in the help ("W:...")
+}
+
+CLI::Validator numberValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0;
+        const char* const end = text.data() + text.size();
+        const auto [stop, error] = std::from_chars(text.data(), end, value);
+        if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value))
+          return "expected a number, got '" + text + "'";
+        return {};
+      },
+      "");  // no description, as integerValidator's
 }
 
 }  // namespace rt::cli

@@ -110,4 +110,9 @@ CLI::Option* addOptional(CLI::App& command, const std::string& names, std::optio
 /// 'VALUE'" (CLI11 puts the option's name in front).
 CLI::Validator integerValidator(int lo, int hi);
 
+/// A check (Option::check) for an option read as a double: the whole value a finite number in
+/// the C locale's form (std::from_chars: 30, -2.5, 1e3), else "expected a number, got 'VALUE'"
+/// rather than CLI11's "Could not convert". The command checks its range.
+CLI::Validator numberValidator();
+
 }  // namespace rt::cli
