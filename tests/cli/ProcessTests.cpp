@@ -31,6 +31,28 @@ using test::runRt;
 using test::writeText;
 
 // ---------------------------------------------------------------------------------------------
+// standard output
+
+TEST(OutputProcessTests, aFullStandardOutputFailsTheCommand) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  // TC01: rt export's scene, rt list and rt probe printed into a full device: exit 1, said so
+  for (const std::vector<std::string>& command : {std::vector<std::string>{"export", "two-color"},
+                                                  {"list"},
+                                                  {"probe", "two-color", "--pixel", "1,1"}}) {
+    std::vector<std::string> argv{"/bin/sh", "-c", "exec \"$0\" \"$@\" >/dev/full", RT_EXE};
+    argv.insert(argv.end(), command.begin(), command.end());
+    const test::RtResult r = test::runProgram(argv);
+    EXPECT_EQ(r.exitCode, 1) << command.front() << ": " << r.err;
+    EXPECT_EQ(r.err, "rt: cannot write standard output: what was printed is incomplete\n")
+        << command.front();
+  }
+  // TC02: a usage error keeps its own exit code, 2
+  const test::RtResult bad =
+      test::runProgram({"/bin/sh", "-c", "exec \"$0\" export no-such-scene >/dev/full", RT_EXE});
+  EXPECT_EQ(bad.exitCode, 2) << bad.err;
+}
+
+// ---------------------------------------------------------------------------------------------
 // render
 
 TEST(RenderProcessTests, widthAndHeightOverrideTheScenesResolution) {

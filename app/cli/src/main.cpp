@@ -36,5 +36,12 @@ int main(int argc, char** argv) {
   const rt::cli::Io io{std::cout, std::cerr, ::isatty(STDERR_FILENO) == 1, &gStop};
   const int code = rt::cli::runRt(args, io);
   std::cout.flush();
+  // A full disk, or a file system that refused: what was printed did not all arrive (rt export's
+  // scene, rt probe's JSON), so the command failed, whatever it returned. (The reason, errno,
+  // is that of the first write that failed, long overwritten by now: not shown.)
+  if (!std::cout) {
+    std::cerr << "rt: cannot write standard output: what was printed is incomplete\n";
+    return code == 0 ? 1 : code;
+  }
   return code;
 }
