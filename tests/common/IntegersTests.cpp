@@ -84,10 +84,10 @@ TEST(IntegersTests, integerInJson) {
 TEST(IntegersTests, integerDescription) {
   // TC01: a bounded range
   EXPECT_EQ(integerDescription(1, 32768), "an integer from 1 to 32768");
-  // TC02: from zero up
-  EXPECT_EQ(integerDescription(0), "a non-negative integer");
+  // TC02: from zero up: int's largest value named, since a larger one is refused
+  EXPECT_EQ(integerDescription(0), "an integer from 0 to 2147483647");
   // TC03: from another lower end up
-  EXPECT_EQ(integerDescription(5), "an integer of at least 5");
+  EXPECT_EQ(integerDescription(5), "an integer from 5 to 2147483647");
 }
 
 }  // namespace

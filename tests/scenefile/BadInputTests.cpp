@@ -361,7 +361,7 @@ const BadInput BAD_INPUTS[] = {
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
      "  \"materials\": {\"m\": {\"shininess\": 1.5}}\n"
      "}\n",
-     "bad.json:4:36: materials.m.shininess: expected a non-negative integer, got 1.5"},
+     "bad.json:4:36: materials.m.shininess: expected an integer from 0 to 2147483647, got 1.5"},
     // EP37: a material name that is not an identifier is quoted in the path
     {"QuotedMaterialName",
      "{\n"

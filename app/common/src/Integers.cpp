@@ -41,8 +41,8 @@ std::optional<int> integerInText(std::string_view text, int lo, int hi) {
 }
 
 std::string integerDescription(int lo, int hi) {
-  if (hi == INT_MAX)
-    return lo == 0 ? "a non-negative integer" : "an integer of at least " + std::to_string(lo);
+  // The upper end said too when it is int's own (2147483647): "a non-negative integer" was
+  // untrue of 2147483648, which is refused.
   return "an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
 }
 

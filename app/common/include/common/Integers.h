@@ -23,8 +23,8 @@ std::optional<int> integerIn(const nlohmann::ordered_json& value, int lo, int hi
 /// integral and in [lo, hi]; nullopt otherwise.
 std::optional<int> integerInText(std::string_view text, int lo, int hi);
 
-/// What the messages call an integer in [lo, hi]: "an integer from 1 to 32768"; with
-/// hi = INT_MAX, "a non-negative integer" (lo = 0) or "an integer of at least 5".
+/// What the messages call an integer in [lo, hi]: "an integer from 1 to 32768", and with
+/// hi = INT_MAX "an integer from 0 to 2147483647" (a larger value is refused, so it is said).
 std::string integerDescription(int lo, int hi = INT_MAX);
 
 }  // namespace rt
