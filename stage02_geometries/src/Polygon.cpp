@@ -1,5 +1,6 @@
 #include "geometries/Polygon.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -43,8 +44,15 @@ Polygon::Polygon(std::vector<Point> vertices)
   const std::size_t n = v.size();
   const Double3& normal = plane_.normal().xyz();
 
+  // A vertex's distance from the plane of the first three must be within the course's zero,
+  // scaled by the vertices' largest coordinate when that is above 1: rounding a coordinate c to
+  // a double moves it by up to 2^-53·|c|, which far from the origin (10^6: 10^-10) is above the
+  // zero itself, so a flat polygon given there would be refused for its rounding.
+  double size = 1;
+  for (const Point& p : v)
+    size = std::max({size, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
   for (std::size_t i = 3; i < n; ++i) {
-    if (!isZero(normal.dot(v[i].xyz() - v[0].xyz())))
+    if (!(std::abs(normal.dot(v[i].xyz() - v[0].xyz())) < ZERO_THRESHOLD * size))
       reject(vertexName(i, v) + " is not in the plane of the first three vertices");
   }
 
