@@ -353,7 +353,7 @@ const BadInput BAD_INPUTS[] = {
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
      "  \"materials\": {\"m\": {\"kD\": [0.5, -0.1, 0.5]}}\n"
      "}\n",
-     "bad.json:4:35: materials.m.kD[1]: expected a non-negative number, got -0.1"},
+     "bad.json:4:35: materials.m.kD[1]: expected a number from 0 to 1e+12, got -0.1"},
     // EP36: fractional shininess
     {"ShininessFraction",
      "{\n"
@@ -413,7 +413,7 @@ const BadInput BAD_INPUTS[] = {
      "  \"lights\": [{\"type\": \"point\", \"intensity\": [1, 1, 1], \"position\": [0, 0, 0], "
      "\"kC\": 0}]\n"
      "}\n",
-     "bad.json:4:85: lights[0].kC: expected a positive number, got 0"},
+     "bad.json:4:85: lights[0].kC: expected a number of at least 2^-40 (the course's zero), got 0"},
     // BV06: maxLevel 0
     {"MaxLevelZero",
      "{\n"
@@ -700,6 +700,34 @@ const BadInput BAD_INPUTS[] = {
      "  \"render\": {\"lightBuffers\": 1}\n"
      "}\n",
      "bad.json:4:30: render.lightBuffers: expected true or false, got 1"},
+    // BV64: a colour beyond the files' largest, 10^12 (the render's sums would overflow towards
+    // infinity, and meet a zero as NaN)
+    {"ColourTooLarge",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"ambient\": {\"color\": [0, 1e308, 0]}\n"
+     "}\n",
+     "bad.json:4:28: ambient.color[1]: expected a number from 0 to 1e+12, got 1e308"},
+    // BV65: a coefficient beyond it
+    {"CoefficientTooLarge",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"materials\": {\"m\": {\"kT\": 1.5e12}}\n"
+     "}\n",
+     "bad.json:4:29: materials.m.kT: expected a number from 0 to 1e+12, got 1.5e12"},
+    // BV66: a kC above 0 but below the course's zero, 2^-40 (the intensity at the light would be
+    // beyond any double)
+    {"LightKcBelowZeroThreshold",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"lights\": [{\"type\": \"point\", \"intensity\": [1, 1, 1], \"position\": [0, 0, 0], "
+     "\"kC\": 1e-320}]\n"
+     "}\n",
+     "bad.json:4:85: lights[0].kC: expected a number of at least 2^-40 (the course's zero), got "
+     "1e-320"},
 };
 
 // gtest prints a case by its name.

@@ -113,12 +113,13 @@ TEST(RoundTripTest, KeepsNamesAndMaterialReferences) {
 }
 
 TEST(RoundTripTest, AwkwardNumbers) {
-  // EP01: numbers without a short decimal form, extreme magnitudes, negative zero and integers
-  // beyond 2^53 are written so that they read back to the same bits.
+  // EP01: numbers without a short decimal form, extreme magnitudes (a colour at the files'
+  // largest, 10^12), negative zero and integers beyond 2^53 are written so that they read back to
+  // the same bits.
   SceneDocument doc = baseDocument();
   const double third = 1.0 / 3;
   litScene(doc).add(
-      Sphere(Point(0.1, -0.0, 1e-300), third), Color(0.1, 1e300, 0),
+      Sphere(Point(0.1, -0.0, 1e-300), third), Color(0.1, 1e12, 1e-300),
       Material{Double3(third), Double3(0.1, 0.2, 0.3), Double3(0), Double3(-0.0), 7, 1.1, {}, {}});
   litScene(doc).add(Sphere(Point(9007199254740993.0, 1e22, -2.5e-8), 1e-7));
   doc.render.minK = 1e-9;

@@ -61,6 +61,14 @@ double readNumberIn(const Node& n, double lo, double hi) {
   return v;
 }
 
+double readConstantAttenuation(const Node& n) {
+  const std::string what = "a number of at least 2^-40 (the course's zero)";
+  if (!n.json().is_number()) n.expected(what);
+  const double v = readNumber(n);
+  if (!(v >= MIN_KC)) n.expected(what);
+  return v;
+}
+
 int readInteger(const Node& n, int lo, int hi) {
   const std::optional<int> v = integerIn(n.json(), lo, hi);
   if (!v) n.expected(integerDescription(lo, hi));
@@ -93,14 +101,18 @@ Vector readDirection(const Node& n) {
   return Vector(d);
 }
 
+namespace {
+double readColorValue(const Node& n) { return readNumberIn(n, 0, MAX_COLOR_VALUE); }
+}  // namespace
+
 Color readColor(const Node& n) {
-  const auto rgb = readArray<double, 3>(n, "a colour [r,g,b]", readNonNegative);
+  const auto rgb = readArray<double, 3>(n, "a colour [r,g,b]", readColorValue);
   return Color(rgb[0], rgb[1], rgb[2]);
 }
 
 Double3 readCoefficient(const Node& n) {
-  if (n.json().is_number()) return Double3(readNonNegative(n));
-  const auto k = readArray<double, 3>(n, "a coefficient (a number or [r,g,b])", readNonNegative);
+  if (n.json().is_number()) return Double3(readColorValue(n));
+  const auto k = readArray<double, 3>(n, "a coefficient (a number or [r,g,b])", readColorValue);
   return Double3(k[0], k[1], k[2]);
 }
 

@@ -26,6 +26,17 @@ double readPositive(const Node& n);
 double readNonNegative(const Node& n);
 /// A finite number in [lo, hi].
 double readNumberIn(const Node& n, double lo, double hi);
+/// The largest colour component and coefficient a file may give: far beyond any light (the
+/// course's scale is 0-255), and low enough that the render's products and sums of them stay
+/// finite (10^12 · 2^40, an intensity over the smallest kC, times a coefficient and summed over
+/// the lights and levels, is nowhere near 10^308): a colour that overflowed would turn into NaN
+/// where it met a zero, and the pixel into a wrong colour.
+inline constexpr double MAX_COLOR_VALUE = 1e12;
+/// The smallest constant attenuation kC: the course's zero, 2^-40 (below it kC is 0, and the
+/// intensity at the light infinite).
+inline constexpr double MIN_KC = 0x1p-40;
+/// kC, at least MIN_KC.
+double readConstantAttenuation(const Node& n);
 /// An integral number in [lo, hi] (1e2 and 100.0 count as 100): the app's one rule for
 /// integers, common/Integers.h.
 int readInteger(const Node& n, int lo, int hi = INT_MAX);

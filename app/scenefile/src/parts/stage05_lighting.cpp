@@ -169,7 +169,7 @@ void attachLights(SceneFormat& format) {
                      [](const Node& n, F& f) { f.direction = readDirection(n); });
   for (const char* type : {"light point", "light spot"}) {
     format.attach<F>(type, "position", [](const Node& n, F& f) { f.position = readPoint(n); });
-    format.attach<F>(type, "kC", [](const Node& n, F& f) { f.kC = readPositive(n); });
+    format.attach<F>(type, "kC", [](const Node& n, F& f) { f.kC = readConstantAttenuation(n); });
     format.attach<F>(type, "kL", [](const Node& n, F& f) { f.kL = readNonNegative(n); });
     format.attach<F>(type, "kQ", [](const Node& n, F& f) { f.kQ = readNonNegative(n); });
   }
