@@ -24,8 +24,15 @@ TEST(TriangleTests, constructor) {
   EXPECT_EQ(t.vertices()[1], Point(1, 0, 0));
   EXPECT_EQ(t.vertices()[2], Point(0, 1, 0));
   // =============== Boundary Values Tests ==================
-  // TC11: collinear vertices throw
-  EXPECT_THROW(Triangle(Point(0, 0, 0), Point(1, 1, 1), Point(2, 2, 2)), std::invalid_argument);
+  // TC11: collinear vertices throw, named as the triangle's
+  try {
+    (void)Triangle(Point(0, 0, 0), Point(1, 1, 1), Point(2, 2, 2));
+    ADD_FAILURE() << "collinear vertices accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "Triangle: the points (0,0,0), (1,1,1), (2,2,2) do not define a plane (two "
+                 "coincide or all are collinear)");
+  }
   // TC12: two coincident vertices throw
   EXPECT_THROW(Triangle(Point(0, 0, 0), Point(0, 0, 0), Point(2, 2, 2)), std::invalid_argument);
   EXPECT_THROW(Triangle(Point(0, 0, 0), Point(1, 0, 0), Point(1, 0, 0)), std::invalid_argument);

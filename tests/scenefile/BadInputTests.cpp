@@ -200,7 +200,7 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1, 0, 0], [2, 0, "
      "0]]}]\n"
      "}\n",
-     "bad.json:4:51: geometries[0].vertices: Plane: the points (0,0,0), (1,0,0), (2,0,0) do not "
+     "bad.json:4:51: geometries[0].vertices: Triangle: the points (0,0,0), (1,0,0), (2,0,0) do not "
      "define a plane (two coincide or all are collinear)"},
     // EP45: a triangle so large that its normal overflows (the constructor refuses it)
     {"HugeTriangle",
@@ -210,7 +210,7 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, "
      "1e300, 0]]}]\n"
      "}\n",
-     "bad.json:4:51: geometries[0].vertices: Plane: the normal of the points (0,0,0), "
+     "bad.json:4:51: geometries[0].vertices: Triangle: the normal of the points (0,0,0), "
      "(1e+300,0,0), "
      "(0,1e+300,0) overflows (coordinates too large)"},
     // EP23: zero normal
