@@ -164,6 +164,19 @@ TEST_F(ModelFileTest, ObjMaterialGroupsAreMeshesOfTheirOwn) {
   EXPECT_EQ(m.groups[1].mesh.vertexCount(), 4u);
 }
 
+TEST_F(ModelFileTest, APathThroughAnotherFolderReadsTheSameObjWithoutItsMaterials) {
+  // An OBJ whose material library is missing, named through a folder it is not in
+  // (exp/../models/m.obj, as rt export writes a model's path relative to the exported scene):
+  // read as models/m.obj (Assimp refused it with "File read error"), its one triangle kept
+  const auto file = write("models/m.obj", "mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  std::filesystem::create_directories(file.parent_path().parent_path() / "exp");
+  const ModelFile m =
+      readModelFile(file.parent_path().parent_path() / "exp" / ".." / "models" / "m.obj", flat());
+  ASSERT_EQ(m.groups.size(), 1u);
+  EXPECT_EQ(m.groups[0].mesh.triangleCount(), 1u);
+  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 3u);
+}
+
 TEST_F(ModelFileTest, DegenerateTrianglesAreDroppedAndCounted) {
   const auto file = write("degenerate.obj",
                           "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"

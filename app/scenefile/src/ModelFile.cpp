@@ -303,8 +303,12 @@ ModelError::ModelError(std::string file, const std::string& what)
 
 bool modelFilesSupported() { return true; }
 
-ModelFile readModelFile(const std::filesystem::path& file, const ModelOptions& options,
+ModelFile readModelFile(const std::filesystem::path& given, const ModelOptions& options,
                         const ModelFileSource& from) {
+  // "a/../b/m.obj" read as "b/m.obj": Assimp's OBJ reader, looking for the file's material
+  // library beside it, fails with "File read error" on a path that climbs out of a folder and
+  // into another when that library is missing (where it only warns otherwise).
+  const std::filesystem::path file = given.lexically_normal();
   const std::string source = file.string();
   if (from.replay) {
     // What the machine that read the files sent: the file itself must be among them.
