@@ -101,6 +101,25 @@ TEST(RenderRequestTests, refusesBadInputBeforeTheFirstRay) {
   SceneArguments room;
   room.argument = file;
   EXPECT_EQ("room.png", resolveRenderRequest(room, {.writesImage = true}).output);
+  // TC06: a resolution out of range, with where it came from: --width on a scene 1 pixel wide
+  // and 32768 high makes the height 32768·32768
+  const std::string tall = dir + "/tall.json";
+  std::ofstream(tall) << "{\"camera\": {\"location\": [0, 0, 10], \"target\": [0, 0, 0],\n"
+                         " \"vpDistance\": 10, \"vpSize\": [4, 4], \"resolution\": [1, 32768]}}\n";
+  SceneArguments wide;
+  wide.argument = tall;
+  wide.width = 32768;
+  EXPECT_EQ(
+      "the image's resolution 32768x1073741824 (from --width, the height keeping the scene's "
+      "aspect ratio) is outside 1..32768 per side",
+      usageErrorOf([&] { resolveRenderRequest(wide, {}); }));
+  // TC07: the four origins a size is said to come from
+  EXPECT_EQ("from --width and --height", resolutionOrigin(1, 2));
+  EXPECT_EQ("from --width, the height keeping the scene's aspect ratio",
+            resolutionOrigin(1, std::nullopt));
+  EXPECT_EQ("from --height, the width keeping the scene's aspect ratio",
+            resolutionOrigin(std::nullopt, 2));
+  EXPECT_EQ("the scene's resolution", resolutionOrigin(std::nullopt, std::nullopt));
 }
 
 TEST(RenderRequestTests, collectsTheWarningsWithoutPrinting) {

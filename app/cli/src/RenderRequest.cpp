@@ -22,7 +22,9 @@ RenderRequest resolveRenderRequest(const SceneArguments& arguments, const Reques
     request.output = needs.output ? *needs.output : defaultOutputPath(arguments.argument);
     checkOutputWritable(request.output, PNG_IMAGE, needs.output ? "-o" : "the default output");
   }
-  if (needs.makesImage) checkImageFits(doc.camera.nX, doc.camera.nY);
+  if (needs.makesImage)
+    checkImageFits(doc.camera.nX, doc.camera.nY,
+                   resolutionOrigin(arguments.width, arguments.height));
   request.warnings = sceneWarnings(doc, arguments, needs.renders);
   return request;
 }
@@ -93,11 +95,19 @@ void applyResolution(CameraSpec& camera, const std::optional<int>& width,
   }
   if (c.nX < 1 || c.nX > kMax || c.nY < 1 || c.nY > kMax)
     throw UsageError("the image's resolution " + std::to_string(c.nX) + "x" + std::to_string(c.nY) +
-                     " is outside 1.." + std::to_string(kMax) + " per side");
+                     " (" + resolutionOrigin(width, height) + ") is outside 1.." +
+                     std::to_string(kMax) + " per side");
+}
+
+std::string resolutionOrigin(const std::optional<int>& width, const std::optional<int>& height) {
+  if (width && height) return "from --width and --height";
+  if (width) return "from --width, the height keeping the scene's aspect ratio";
+  if (height) return "from --height, the width keeping the scene's aspect ratio";
+  return "the scene's resolution";
 }
 
 // An Image keeps a Color (three doubles) per pixel, and the PNG writer an RGB byte triple.
-void checkImageFits(int nX, int nY) {
+void checkImageFits(int nX, int nY, std::string_view origin) {
   const double bytes = static_cast<double>(nX) * nY * (sizeof(Color) + 3);
   const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
   if (pages <= 0 || pageSize <= 0) return;  // unknown: let the allocation decide
@@ -105,7 +115,7 @@ void checkImageFits(int nX, int nY) {
   if (bytes > memory) {
     std::ostringstream os;
     os.precision(3);
-    os << "a " << nX << "x" << nY << " image needs " << bytes / (1u << 30)
+    os << "a " << nX << "x" << nY << " image (" << origin << ") needs " << bytes / (1u << 30)
        << " GiB, more than this machine's " << memory / (1u << 30) << " GiB of memory";
     throw UsageError(os.str());
   }

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "camera/Camera.h"
@@ -111,9 +112,14 @@ SceneDocument sceneFromArguments(const SceneArguments& arguments);
 void applyResolution(CameraSpec& camera, const std::optional<int>& width,
                      const std::optional<int>& height);
 
+/// Where a resolution came from, for the messages: "from --width and --height", "from --width,
+/// the height keeping the scene's aspect ratio" (or --height's), or "the scene's resolution".
+std::string resolutionOrigin(const std::optional<int>& width, const std::optional<int>& height);
+
 /// Refuses an nX x nY image that cannot fit in this machine's memory.
-/// @throws UsageError naming the size and the memory.
-void checkImageFits(int nX, int nY);
+/// @throws UsageError naming the size, where it came from (origin, resolutionOrigin's words) and
+/// the memory.
+void checkImageFits(int nX, int nY, std::string_view origin);
 
 /// The warnings about doc, one line each without "rt: ": those the scene file's reader left in
 /// doc.warnings (stage 7: glass faces wound both ways) and, when rendering, one for a render by

@@ -88,7 +88,9 @@ int benchScaling(const BenchArgs& args, const Destinations& to, const Io& io) {
   // A side given alone makes the image square too.
   const int nX = s.width.value_or(s.height.value_or(SCALING_SIDE));
   const int nY = s.height.value_or(s.width.value_or(SCALING_SIDE));
-  checkImageFits(nX, nY);
+  checkImageFits(nX, nY,
+                 s.width || s.height ? "from --width and --height (one alone: a square)"
+                                     : "rt bench --scaling's own size");
   const int threads = benchThreads(args);
 
   ScalingTable table{.kind = *plan.kind,
