@@ -28,9 +28,10 @@ double readNonNegative(const Node& n);
 double readNumberIn(const Node& n, double lo, double hi);
 /// The largest colour component and coefficient a file may give: far beyond any light (the
 /// course's scale is 0-255), and low enough that the render's products and sums of them stay
-/// finite (10^12 · 2^40, an intensity over the smallest kC, times a coefficient and summed over
-/// the lights and levels, is nowhere near 10^308): a colour that overflowed would turn into NaN
-/// where it met a zero, and the pixel into a wrong colour.
+/// finite (10^12 · 2^40, an intensity over the smallest kC, times a coefficient, about 10^36 a
+/// light) where a value near 1e308 overflowed, and an infinite colour that met a zero turned into
+/// NaN and the pixel into a wrong colour. Not a proof for every scene: kR and kT above 1 multiply
+/// a path's weight at every level, so at a large maxLevel they can still overflow it.
 inline constexpr double MAX_COLOR_VALUE = 1e12;
 /// The smallest constant attenuation kC: the course's zero, 2^-40 (below it kC is 0, and the
 /// intensity at the light infinite).
