@@ -292,5 +292,15 @@ TEST(RtAnimate, TheVideoHoldsThisRunsFramesOnly) {
   EXPECT_EQ(probe.out, "2\n");
 }
 
+TEST(RtAnimate, TheVideoMayGoIntoTheFramesFolderTheCommandMakes) {
+  if (!findOnPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video)";
+  const std::string dir = freshDirectory("animate-video-inside");
+  const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "2", "--width",
+                                  "32", "-o", dir + "/new", "--video", dir + "/new/v.mp4", "-q"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/new/v.mp4"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/new/frame-0001.png"));
+}
+
 }  // namespace
 }  // namespace rt::cli

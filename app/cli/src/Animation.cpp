@@ -260,7 +260,11 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
   if (!fs::is_directory(parent, ec))
     throw UsageError("-o: cannot write frames into '" + dir + "': the directory '" +
                      parent.string() + "' does not exist");
-  if (args.video) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
+  // A video inside the frames' folder, which is made below: its checks once the folder exists.
+  const bool videoInFrames =
+      args.video && !fs::exists(plan.directory, ec) &&
+      fs::path(*args.video).parent_path().lexically_normal() == plan.directory.lexically_normal();
+  if (args.video && !videoInFrames) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
   if (args.video) {
     const std::optional<std::string> ffmpeg = findOnPath("ffmpeg");
     if (!ffmpeg)
@@ -272,6 +276,7 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
   }
   if (!fs::exists(plan.directory, ec) && !fs::create_directory(plan.directory, ec))
     throw UsageError("-o: cannot create the directory '" + dir + "': " + ec.message());
+  if (videoInFrames) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
   checkOutputWritable(plan.framePath(plan.frames.front()), PNG_IMAGE, "-o");
   return plan;
 }
