@@ -226,10 +226,15 @@ TEST(RtAnimate, RefusesAPathItCannotMakeBeforeAnyFrame) {
   const test::RtResult fpsWord = runRt(
       {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps", "1e400", "-o", dir + "/f"});
   EXPECT_EQ(fpsWord.err, "rt: --fps: expected a number, got '1e400'\n");
-  const test::RtResult fps = runRt(
-      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps", "0", "-o", dir + "/f"});
+  const test::RtResult fps = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps",
+                                    "0", "-o", dir + "/f", "--video", dir + "/v.mp4"});
   EXPECT_EQ(fps.exitCode, 2);
   EXPECT_EQ(fps.err, "rt: --fps: expected a number of frames per second in (0, 1000], got 0\n");
+  // --fps without --video, which alone it would change nothing for
+  const test::RtResult fpsAlone = runRt(
+      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--fps", "24", "-o", dir + "/f"});
+  EXPECT_EQ(fpsAlone.exitCode, 2);
+  EXPECT_EQ(fpsAlone.err, "rt: --fps requires --video (see rt animate --help)\n");
   EXPECT_FALSE(std::filesystem::exists(dir + "/f"));
 }
 

@@ -133,11 +133,15 @@ void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
       ->transform(integerValidator(0, MAX_FRAMES - 1));
   addOptional(command, "-o,--output", into.output,
               "the frames' folder, created if missing (default: SCENE-frames)", "DIR");
-  addOptional(command, "--video", into.video,
-              "encode the frames into FILE.mp4 with ffmpeg (when it is installed)", "FILE.mp4");
-  command.add_option("--fps", into.fps, "the video's frames per second (default: 30)")
+  CLI::Option* video =
+      addOptional(command, "--video", into.video,
+                  "encode the frames into FILE.mp4 with ffmpeg (when it is installed)", "FILE.mp4");
+  // The frames have no rate of their own: --fps alone would change nothing.
+  command
+      .add_option("--fps", into.fps, "the video's frames per second, with --video (default: 30)")
       ->type_name("F")
-      ->check(numberValidator());
+      ->check(numberValidator())
+      ->needs(video);
   addGridLinesOption(command, into.gridLines);
   command.add_flag("-q,--quiet", into.quiet, "no progress; only the final timing line");
   command.add_flag("-s,--silent", into.silent, "print nothing but errors");
