@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -33,12 +32,6 @@ std::string writeImage(const std::string& path, int nX, int nY,
   for (const Changed& c : changed) image.setPixel(c.x, c.y, c.color);
   PngImageWriter().write(image, path);
   return path;
-}
-
-/// The whole content of the file at path.
-std::string fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 /// The images of most cases: 10 x 10, and the same with pixel (2, 1)'s red channel 3 higher.
@@ -154,7 +147,7 @@ TEST(CompareTests, imagesThatCannotBeCompared) {
   // TC09: --diff naming A or B (however spelt) is refused before anything is written: both
   // images stay as they were
   const std::string b = writeImage(dir + "/b.png", 10, 10, {{0, 0, Color(0, 0, 0)}});
-  const std::string bytesA = fileBytes(a), bytesB = fileBytes(b);
+  const std::string bytesA = test::readFile(a), bytesB = test::readFile(b);
   r = run({"compare", a, b, "--diff", a});
   EXPECT_EQ(r.code, 2);
   EXPECT_EQ(r.out, "");
@@ -166,8 +159,8 @@ TEST(CompareTests, imagesThatCannotBeCompared) {
   EXPECT_EQ(r.err, "rt: --diff: '" + dir + "/./b.png' is B ('" + b +
                        "'): the difference map would overwrite an image it compares; give "
                        "another file\n");
-  EXPECT_EQ(fileBytes(a), bytesA);
-  EXPECT_EQ(fileBytes(b), bytesB);
+  EXPECT_EQ(test::readFile(a), bytesA);
+  EXPECT_EQ(test::readFile(b), bytesB);
 }
 
 TEST(CompareTests, differenceHeatMap) {

@@ -10,8 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "TestFiles.h"
@@ -136,14 +134,6 @@ int RtChild::wait() {
   ::waitpid(pid_, &status, 0);
   pid_ = -1;
   return exitCodeOf(status);
-}
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
 }
 
 std::string freshDirectory(const std::string& name) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "TestFiles.h"  // readFile, which the tests that run rt read its files with
+
 namespace rt::cli::test {
 
 struct RtResult {
@@ -55,9 +57,6 @@ class RtChild {
   std::string err_;
   std::size_t scanned_ = 0;
 };
-
-/// The file's bytes, or "" when it does not exist.
-std::string readFile(const std::string& path);
 
 /// A fresh, empty directory for one test, under the build tree's cli-test-output/: the absolute
 /// path of freshTestDirectory(name) (TestFiles.h), for a child run in another directory.
