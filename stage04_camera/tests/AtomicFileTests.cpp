@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -32,6 +33,19 @@ std::string errorOf(F&& f) {
     return e.what();
   }
   return "(no error)";
+}
+
+/// The permission bits of the file at p (through any symbolic link), or -1 when it has none.
+int modeOf(const fs::path& p) {
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 ? static_cast<int>(st.st_mode & 0777) : -1;
+}
+
+/// What the symbolic link at p points to, or "(not a link)".
+std::string linkTarget(const fs::path& p) {
+  std::error_code ec;
+  const fs::path target = fs::read_symlink(p, ec);
+  return ec ? "(not a link)" : target.string();
 }
 
 TEST(AtomicFileTests, writeFileAtomicallyWritesTheWholeContent) {
@@ -129,6 +143,148 @@ TEST(AtomicFileTests, checkTemporaryFileBeside) {
               checkTemporaryFileBeside("/proc/version");
             }).find("cannot write '/proc/version': "),
             std::string::npos);
+}
+
+TEST(AtomicFileTests, writeFileAtomicallyWritesThroughSymbolicLinks) {
+  const fs::path dir = testDir("links");
+  const fs::path renders = dir / "renders";
+  const fs::path out = dir / "out";
+  fs::create_directories(renders);
+  fs::create_directories(out);
+  const fs::path real = renders / "real.png";
+  std::ofstream(real) << "old content";
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: a link with a relative target, into another directory: the target relative to the
+  // link's directory (not the working directory) gets the bytes, the link stays a link to it,
+  // and no temporary file remains in either directory
+  const fs::path link = out / "link.png";
+  fs::create_symlink("../renders/real.png", link);
+  writeFileAtomically(link.string(), std::string_view("new"));
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(linkTarget(link), "../renders/real.png");
+  EXPECT_EQ(readFile(real), "new");
+  EXPECT_EQ(entries(renders), 1u);
+  EXPECT_EQ(entries(out), 1u);
+  // TC02: a link with an absolute target
+  const fs::path absolute = out / "absolute.png";
+  fs::create_symlink(fs::absolute(real), absolute);
+  writeFileAtomically(absolute.string(), std::string_view("absolute"));
+  EXPECT_TRUE(fs::is_symlink(absolute));
+  EXPECT_EQ(readFile(real), "absolute");
+  EXPECT_EQ(entries(renders), 1u);
+  // TC03: a chain of two links: both stay links, the file at the end gets the bytes
+  const fs::path chain = dir / "chain.png";
+  fs::create_symlink("out/link.png", chain);
+  writeFileAtomically(chain.string(), std::string_view("through two links"));
+  EXPECT_TRUE(fs::is_symlink(chain));
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(readFile(real), "through two links");
+  EXPECT_EQ(entries(renders), 1u);
+  EXPECT_EQ(entries(out), 2u);  // link.png and absolute.png
+  // TC04: a dangling link creates its target (as cp does), mode 0644, and stays a link
+  const fs::path dangling = out / "dangling.png";
+  fs::create_symlink("../renders/new.png", dangling);
+  writeFileAtomically(dangling.string(), std::string_view("created"));
+  EXPECT_TRUE(fs::is_symlink(dangling));
+  EXPECT_EQ(readFile(renders / "new.png"), "created");
+  EXPECT_EQ(modeOf(renders / "new.png"), 0644);
+  EXPECT_EQ(entries(renders), 2u);
+  // TC05: checkTemporaryFileBeside accepts a link to a writable file and leaves both alone
+  EXPECT_EQ(errorOf([&] { checkTemporaryFileBeside(link.string()); }), "(no error)");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(readFile(real), "through two links");
+  EXPECT_EQ(entries(renders), 2u);
+  // =============== Boundary Values Tests ==================
+  // TC11: a dangling link into a directory that does not exist: refused, the error names the
+  // link, the link stays, and the probe is made in the target's directory too (the link's own
+  // directory is writable)
+  const fs::path nowhere = out / "nowhere.png";
+  fs::create_symlink("../missing/x.png", nowhere);
+  EXPECT_EQ(errorOf([&] { writeFileAtomically(nowhere.string(), std::string_view("x")); }),
+            "cannot write '" + nowhere.string() + "': No such file or directory");
+  EXPECT_EQ(errorOf([&] { checkTemporaryFileBeside(nowhere.string()); }),
+            "cannot write '" + nowhere.string() + "': No such file or directory");
+  EXPECT_TRUE(fs::is_symlink(nowhere));
+  EXPECT_EQ(entries(out), 4u);  // link, absolute, dangling, nowhere
+  // TC12: a link to itself (a loop) is refused, and stays
+  const fs::path loop = out / "loop.png";
+  fs::create_symlink("loop.png", loop);
+  EXPECT_EQ(errorOf([&] { writeFileAtomically(loop.string(), std::string_view("x")); }),
+            "cannot write '" + loop.string() + "': Too many levels of symbolic links");
+  EXPECT_TRUE(fs::is_symlink(loop));
+  EXPECT_EQ(entries(out), 5u);
+}
+
+TEST(AtomicFileTests, writeFileAtomicallyKeepsTheReplacedFilesPermissions) {
+  const fs::path dir = testDir("modes");
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: an existing 0600 file stays 0600 (not reset to 0644), with the new bytes
+  const fs::path secret = dir / "secret.json";
+  std::ofstream(secret) << "old";
+  fs::permissions(secret, static_cast<fs::perms>(0600));
+  writeFileAtomically(secret.string(), std::string_view("new"));
+  EXPECT_EQ(readFile(secret), "new");
+  EXPECT_EQ(modeOf(secret), 0600);
+  // TC02: an existing group-writable 0664 file stays 0664
+  const fs::path shared = dir / "shared.png";
+  std::ofstream(shared) << "old";
+  fs::permissions(shared, static_cast<fs::perms>(0664));
+  writeFileAtomically(shared.string(), std::string_view("new"));
+  EXPECT_EQ(modeOf(shared), 0664);
+  // TC03: through a symbolic link, the target's permissions are kept, and the link stays
+  const fs::path link = dir / "link.json";
+  fs::create_symlink("secret.json", link);
+  writeFileAtomically(link.string(), std::string_view("linked"));
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(readFile(secret), "linked");
+  EXPECT_EQ(modeOf(secret), 0600);
+  // TC04: a new file is 0644 whatever the umask (an explicit fchmod, which the umask does not
+  // limit)
+  const mode_t saved = ::umask(077);
+  writeFileAtomically((dir / "new.png").string(), std::string_view("new"));
+  ::umask(saved);
+  EXPECT_EQ(modeOf(dir / "new.png"), 0644);
+  EXPECT_EQ(entries(dir), 4u);
+  // TC05: root may write a read-only file, as cp and a shell's `>` may; it stays 0444. (For
+  // anyone else, writeFileAtomicallyRefusesAReadOnlyFile.)
+  if (::geteuid() == 0) {
+    const fs::path readOnly = dir / "read-only.txt";
+    std::ofstream(readOnly) << "old";
+    fs::permissions(readOnly, static_cast<fs::perms>(0444));
+    writeFileAtomically(readOnly.string(), std::string_view("root's"));
+    EXPECT_EQ(readFile(readOnly), "root's");
+    EXPECT_EQ(modeOf(readOnly), 0444);
+  }
+}
+
+TEST(AtomicFileTests, writeFileAtomicallyRefusesAReadOnlyFile) {
+  if (::geteuid() == 0)
+    GTEST_SKIP() << "running as root, who may write a read-only file (as cp may); "
+                    "writeFileAtomicallyKeepsTheReplacedFilesPermissions checks that";
+  const fs::path dir = testDir("read-only");
+  const fs::path path = dir / "kept.png";
+  std::ofstream(path) << "old";
+  fs::permissions(path, static_cast<fs::perms>(0444));
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: refused with the system's reason; the file keeps its bytes and mode, and no
+  // temporary file remains
+  EXPECT_EQ(errorOf([&] { writeFileAtomically(path.string(), std::string_view("new")); }),
+            "cannot write '" + path.string() + "': Permission denied");
+  EXPECT_EQ(readFile(path), "old");
+  EXPECT_EQ(modeOf(path), 0444);
+  EXPECT_EQ(entries(dir), 1u);
+  // TC02: the probe before a render refuses it too
+  EXPECT_EQ(errorOf([&] { checkTemporaryFileBeside(path.string()); }),
+            "cannot write '" + path.string() + "': Permission denied");
+  EXPECT_EQ(entries(dir), 1u);
+  // TC03: through a symbolic link: the message names the link, as the user gave it
+  const fs::path link = dir / "link.png";
+  fs::create_symlink("kept.png", link);
+  EXPECT_EQ(errorOf([&] { writeFileAtomically(link.string(), std::string_view("new")); }),
+            "cannot write '" + link.string() + "': Permission denied");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(readFile(path), "old");
+  EXPECT_EQ(entries(dir), 2u);
 }
 
 }  // namespace
