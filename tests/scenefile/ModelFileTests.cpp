@@ -261,6 +261,110 @@ TEST_F(ModelFileTest, BinaryLittleEndianPly) {
   EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
 }
 
+/// A PLY header for 3 vertices and 1 face, in ASCII.
+const std::string kPlyHeader =
+    "ply\nformat ascii 1.0\nelement vertex 3\n"
+    "property float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+
+// The header's counts against the bytes after it: the fewest bytes its elements can take, in
+// binary their scalars' and their lists' counts' sizes, in ASCII two a value (a character and a
+// separator) less the last separator. One byte short of that is refused, naming the counts.
+TEST_F(ModelFileTest, APlyHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
+  const std::string binaryHeader =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  // 5 vertices of 12 bytes, 2 faces of at least their 1-byte count: 62 bytes.
+  const auto shortBinary = write("short.ply", binaryHeader + std::string(61, '\0'));
+  EXPECT_EQ(expectThrow(shortBinary, flat()),
+            shortBinary.string() +
+                ": the PLY header announces 5 'vertex', 2 'face' (at least 62 bytes of binary "
+                "data), but 61 bytes follow it");
+  // 3 vertices of 3 values and 1 face of its count, two bytes a value, the last without its
+  // separator: 3·6 + 2 − 1 = 19 bytes.
+  const auto shortAscii = write("short-ascii.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_EQ(expectThrow(shortAscii, flat()),
+            shortAscii.string() +
+                ": the PLY header announces 3 'vertex', 1 'face' (at least 19 bytes of ASCII "
+                "data), but 18 bytes follow it");
+  // A binary file announcing 4·10^9 vertices in 12 bytes (Assimp ran out of memory on it), and
+  // an ASCII one announcing 4·10^8 (Assimp took gigabytes and minutes): at once, in memory too.
+  const std::string huge =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+      std::string(12, '\0');
+  const auto hugeFile = write("huge.ply", huge);
+  EXPECT_EQ(expectThrow(hugeFile, flat()),
+            hugeFile.string() +
+                ": the PLY header announces 4000000000 'vertex', 1 'face' (at least 48000000001 "
+                "bytes of binary data), but 12 bytes follow it");
+  const std::string hugeAscii =
+      "ply\nformat ascii 1.0\nelement vertex 400000000\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n";
+  try {
+    readModelFromMemory({reinterpret_cast<const std::byte*>(hugeAscii.data()), hugeAscii.size()},
+                        "ply", "mem.ply", flat());
+    ADD_FAILURE() << "no ModelError";
+  } catch (const ModelError& e) {
+    EXPECT_STREQ(e.what(),
+                 "mem.ply: the PLY header announces 400000000 'vertex', 1 'face' (at least "
+                 "2400000001 bytes of ASCII data), but 6 bytes follow it");
+  }
+  // A count beyond 2^64 and counts whose bytes add up beyond it: the sum stops at 2^64.
+  const auto beyond = write("beyond.ply",
+                            "ply\nformat binary_big_endian 1.0\nelement vertex "
+                            "99999999999999999999\nproperty double x\nelement face "
+                            "9223372036854775807\nproperty list uchar int i\nend_header\n");
+  EXPECT_EQ(expectThrow(beyond, flat()),
+            beyond.string() +
+                ": the PLY header announces 18446744073709551615 'vertex', 9223372036854775807 "
+                "'face' (at least 2^64 bytes of binary data), but 0 bytes follow it");
+}
+
+// ---- OFF ----------------------------------------------------------------------------------
+
+TEST_F(ModelFileTest, OffWithCommentsAndBlankLines) {
+  const auto file = write("quad.off",
+                          "# a unit square and a triangle above it\nOFF\n5 2 0\n"
+                          "0 0 0\n2 0 0\n2 3 0\n\n0 3 0\n0 0 5\n4 0 1 2 3\n3 0 3 4\n");
+  const ModelFile m = readModelFile(file, flat());
+  ASSERT_EQ(m.groups.size(), 1u);
+  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 5u);
+  EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
+}
+
+// Assimp's OFF reader logs these faults and returns a model that is not the file's (an index
+// out of range read as the last vertex, a face dropped, vertices left at the origin): refused.
+TEST_F(ModelFileTest, OffFaultsThatAssimpOnlyLogsAreRefused) {
+  const std::string triangle = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n";
+  const auto range = write("range.off", triangle + "3 0 1 7\n3 9 1 8\n");
+  EXPECT_EQ(expectThrow(range, flat()),
+            range.string() +
+                ": OFF: 3 vertex indices of its faces out of range (the file has 3 vertices, "
+                "numbered 0 to 2)");
+  const auto empty = write("empty-face.off", triangle + "3 0 1 2\n0\n");
+  EXPECT_EQ(expectThrow(empty, flat()),
+            empty.string() +
+                ": OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
+                "not take");
+  const auto ten = write("ten.off",
+                         "OFF\n11 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 1 0\n-1 0 0\n"
+                         "-1 -1 0\n0 -1 0\n1 -1 0\n2 -1 0\n2 0 0\n3 0 1 2\n"
+                         "10 0 1 2 3 4 5 6 7 8 9\n");
+  EXPECT_EQ(expectThrow(ten, flat()),
+            ten.string() +
+                ": OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
+                "not take");
+  const auto cut = write("cut.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(expectThrow(cut, flat()),
+            cut.string() +
+                ": OFF: the file has fewer lines than its header announces vertices "
+                "and faces");
+}
+
 // ---- STL ----------------------------------------------------------------------------------
 
 /// The unit cube's 12 triangles, wound outward, with their facet normals.
@@ -428,15 +532,11 @@ TEST_F(ModelFileTest, AnUnknownFormatIsRefusedWithAssimpsMessage) {
                          file.string() + "\".");
 }
 
-const std::string kPlyHeader =
-    "ply\nformat ascii 1.0\nelement vertex 3\n"
-    "property float x\nproperty float y\nproperty float z\n"
-    "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
-
 TEST_F(ModelFileTest, APlyWithoutItsFaceDataIsRefused) {
   // Assimp reads the missing face as one without indices, on which its Triangulate step would
   // abort the program: refused before it.
-  const auto file = write("cut.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n");
+  // A blank line in place of the face: the bytes the header's counts ask for are there (19).
+  const auto file = write("cut.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n\n");
   EXPECT_EQ(expectThrow(file, flat()),
             file.string() + ": face 0 of mesh 0 has no vertex indices (does the file end early?)");
 }
@@ -519,13 +619,15 @@ TEST_F(ModelFileTest, ADegenerateTransformIsRefused) {
 }
 
 TEST_F(ModelFileTest, AHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
-  // A PLY header announcing 2^33 vertices and no data: refused (by Assimp), not a crash.
+  // A PLY header announcing 2^33 vertices and no data: refused, not a crash.
   const auto file = write("huge.ply",
                           "ply\nformat binary_little_endian 1.0\nelement vertex 8589934592\n"
                           "property float x\nproperty float y\nproperty float z\n"
                           "element face 1\nproperty list uchar int vertex_indices\nend_header\n");
   EXPECT_EQ(expectThrow(file, flat()),
-            file.string() + ": Invalid .ply file: Vertices should be declared before faces");
+            file.string() +
+                ": the PLY header announces 8589934592 'vertex', 1 'face' (at least 103079215105 "
+                "bytes of binary data), but 0 bytes follow it");
 }
 
 }  // namespace
