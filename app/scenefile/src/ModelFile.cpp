@@ -1,6 +1,7 @@
 /// @file ModelFile.cpp
 /// readModelFile through Assimp. Assimp does the parsing, its validation of what it read (an
-/// index out of range is refused there) and three post-processing steps
+/// index out of range is refused there; the OFF reader's, which it replaces and only logs, by
+/// ImportErrors below; a PLY header's counts are checked before) and three post-processing steps
 /// (Triangulate, JoinIdenticalVertices, and GenSmoothNormals when smooth shading is asked: it
 /// leaves alone a mesh that has normals), after RemoveComponent drops what the mesh does not
 /// keep (see flagsFor); this file walks the node tree, applies the node
