@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,13 @@ using test::freshDirectory;
 using test::readFile;
 using test::runProgram;
 using test::runRt;
+
+/// ffprobe's count of the frames of video's first video stream, read by decoding them (its
+/// output is "N\n").
+test::RtResult videoFrameCount(const std::string& ffprobe, const std::string& video) {
+  return runProgram({ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
+                     "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", video});
+}
 
 CameraSpec targetCamera() {
   CameraSpec c;
@@ -290,21 +298,25 @@ TEST(RtAnimate, TheVideoHoldsThisRunsFramesOnly) {
   r = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "2", "--width", "32", "-o",
              dir + "/f", "--video", dir + "/v.mp4", "-q"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const test::RtResult probe =
-      runProgram({*ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
-                  "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", dir + "/v.mp4"});
+  const test::RtResult probe = videoFrameCount(*ffprobe, dir + "/v.mp4");
   ASSERT_EQ(probe.exitCode, 0) << probe.err;
   EXPECT_EQ(probe.out, "2\n");
 }
 
 TEST(RtAnimate, TheVideoMayGoIntoTheFramesFolderTheCommandMakes) {
-  if (!findOnPath("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video)";
+  const std::optional<std::string> ffprobe = findOnPath("ffprobe");
+  if (!findOnPath("ffmpeg") || !ffprobe)
+    GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";
   const std::string dir = freshDirectory("animate-video-inside");
   const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "90", "--frames", "2", "--width",
                                   "32", "-o", dir + "/new", "--video", dir + "/new/v.mp4", "-q"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/new/v.mp4"));
   EXPECT_TRUE(std::filesystem::is_regular_file(dir + "/new/frame-0001.png"));
+  // The video holds the two frames, exactly.
+  const test::RtResult probe = videoFrameCount(*ffprobe, dir + "/new/v.mp4");
+  ASSERT_EQ(probe.exitCode, 0) << probe.err;
+  EXPECT_EQ(probe.out, "2\n");
 }
 
 }  // namespace
