@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "InProcess.h"
@@ -392,6 +393,44 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
     EXPECT_EQ(r.err, c.message) << c.partition;
     EXPECT_EQ(r.out, "") << c.partition;
   }
+}
+
+TEST(CommandTests, probeByRayRefusesTheOptionsThatChooseAPixel) {
+  // The galaxy has views, so --view main alone would be accepted.
+  const std::vector<std::string> byRay{"probe", "galaxy", "--ray", "0,0,0", "0,0,-1"};
+  // TC01: each option a ray given directly leaves without effect (the camera, its image, the
+  // pixel's samples, the render's threads): exit 2, the pair named, nothing printed
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {"--view", "main"}, {"--width", "8"}, {"--height", "8"}, {"--seed", "3"}, {"--threads", "2"}};
+  for (const auto& [option, value] : refused) {
+    std::vector<std::string> args = byRay;
+    args.insert(args.end(), {option, value});
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << option;
+    EXPECT_EQ(r.err, "rt: --ray excludes " + option + " (see rt probe --help)\n") << option;
+    EXPECT_EQ(r.out, "") << option;
+  }
+  // TC02: the same before --ray
+  const Outcome before = run({"probe", "galaxy", "--width", "8", "--ray", "0,0,0", "0,0,-1"});
+  EXPECT_EQ(before.code, 2);
+  EXPECT_EQ(before.err, "rt: --ray excludes --width (see rt probe --help)\n");
+  EXPECT_EQ(before.out, "");
+  // TC03: the options that change what a ray meets or how it is traced are taken with --ray
+  for (const std::vector<std::string>& taken :
+       std::vector<std::vector<std::string>>{{"--tracer", "whitted"},
+                                             {"--param", "arms=3"},
+                                             {"--accel", "none"},
+                                             {"--light-buffers", "off"}}) {
+    std::vector<std::string> args = byRay;
+    args.insert(args.end(), taken.begin(), taken.end());
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 0) << taken[0] << ": " << r.err;
+  }
+  // TC04: and every refused one with --pixel, which they choose
+  std::vector<std::string> byPixel{"probe", "galaxy", "--pixel", "0,0"};
+  for (const auto& [option, value] : refused) byPixel.insert(byPixel.end(), {option, value});
+  const Outcome pixel = run(byPixel);
+  EXPECT_EQ(pixel.code, 0) << pixel.err;
 }
 
 TEST(CommandTests, aParamTakesOneValueAndLeavesTheSceneArgumentAlone) {

@@ -3,6 +3,8 @@
 #include <ostream>
 #include <utility>
 
+#include <CLI/App.hpp>
+
 #include "CommandRegistration.h"
 #include "camera/Camera.h"
 #include "cli/Registry.h"
@@ -100,7 +102,9 @@ void addProbeCommand(CommandLine& rt) {
   const auto [command, args] = rt.addCommand(
       "probe", "trace one ray through a scene and print what it hits, as JSON",
       "Give exactly one of --ray and --pixel. Numbers may be negative and are separated by\n"
-      "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n\n"
+      "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n"
+      "--view, --width, --height and --seed (and --threads, from mini project 2 on) are refused\n"
+      "with --ray: its ray meets no camera and is traced once, as sample 0 with seed 0.\n\n"
       "Output:\n"
       "  {\"ray\": {\"origin\": [x, y, z], \"direction\": [x, y, z]},\n"
       "   \"hits\": [{\"t\": .., \"point\": [..], \"normal\": [..], \"geometry\": INDEX,\n"
@@ -115,12 +119,19 @@ void addProbeCommand(CommandLine& rt) {
       "0-255 scale.\n",
       probe);
   // The values are checked by probe(): a pixel's range depends on the scene's resolution.
-  addOptional(*command, "--ray", args->ray, "the ray's origin and direction", "OX,OY,OZ DX,DY,DZ");
+  CLI::Option* ray = addOptional(*command, "--ray", args->ray, "the ray's origin and direction",
+                                 "OX,OY,OZ DX,DY,DZ");
   addOptional(*command, "--pixel", args->pixel,
               "the camera's ray through pixel X (column), Y (row)", "X,Y");
   addSceneArguments(*command, args->scene, "image width for --pixel (default: the scene's)",
                     "image height for --pixel (default: the scene's)",
                     "the tracer that computes color (default: the scene's)");
+  // A ray given directly has no camera, image or pixel, and its colour is the tracer's for one
+  // sample (RayTracer::traceRay(ray): seed 0) on this thread: the options that choose the
+  // camera (--view), its image's size, the samples' seed or the render's threads (mini 2 on)
+  // would change nothing. The tracer, the scene's parameters and the acceleration do.
+  for (const char* name : {"--view", "--width", "--height", "--seed", "--threads"})
+    if (CLI::Option* pixelOnly = command->get_option_no_throw(name)) ray->excludes(pixelOnly);
 }
 
 }  // namespace rt::cli
