@@ -435,6 +435,80 @@ TEST(BenchTests, outputFilesTakeTheirFormatsFromTheirEndings) {
             2);
 }
 
+TEST(BenchTests, twoOutputsNamingOneFileAreRefusedBeforeAnyRay) {
+  // Relative to the current directory, as "x" and "./x" are.
+  const std::string dir = test::freshTestDirectory("benchSameOutput");
+  const std::string file = dir + "/bench.md", absolute = std::filesystem::absolute(file).string();
+  { std::ofstream(file) << "the previous table"; }
+  std::filesystem::create_directory(dir + "/sub");
+  std::filesystem::create_directory_symlink(std::filesystem::absolute(dir), dir + "/link");
+  const std::string here = "bench-same-output.md";  // a new file in the current directory
+  std::filesystem::remove(here);
+  // A table of two-color at 8x8, or a scaling of 100 stars: fast, were they not refused.
+  const std::vector<std::string> table{"bench", "two-color", "--width", "8", "--height", "8"},
+      scaling{"bench", "--scaling", "--stars", "100", "--width", "8", "--height", "8"};
+  struct Case {
+    const char* partition;
+    std::vector<std::string> run;
+    std::vector<std::string> args;  // after run's
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      // TC01: the same name twice
+      {"TC01", table, {"-o", file, "-o", file}, "rt: -o: '" + file + "' is given twice\n"},
+      // TC02: a new file's name in the current directory and the same with "./"; a relative
+      // name and the same with "./", and with the current directory's path
+      {"TC02",
+       table,
+       {"-o", here, "-o", "./" + here},
+       "rt: -o: '" + here + "' and './" + here + "' name the same file\n"},
+      {"TC02",
+       table,
+       {"-o", file, "-o", "./" + file},
+       "rt: -o: '" + file + "' and './" + file + "' name the same file\n"},
+      {"TC02",
+       table,
+       {"-o", absolute, "-o", file},
+       "rt: -o: '" + absolute + "' and '" + file + "' name the same file\n"},
+      // TC03: a name with "." and ".." in it
+      {"TC03",
+       table,
+       {"-o", file, "-o", dir + "/./sub/../bench.md"},
+       "rt: -o: '" + file + "' and '" + dir + "/./sub/../bench.md' name the same file\n"},
+      // TC04: through a symbolic link to the directory
+      {"TC04",
+       table,
+       {"-o", dir + "/link/bench.md", "-o", file},
+       "rt: -o: '" + dir + "/link/bench.md' and '" + file + "' name the same file\n"},
+      // TC05: the third of three the same as the first; with a format flag
+      {"TC05",
+       table,
+       {"--csv", "-o", dir + "/a.csv", "-o", dir + "/b.csv", "-o", dir + "/sub/../a.csv"},
+       "rt: -o: '" + dir + "/a.csv' and '" + dir + "/sub/../a.csv' name the same file\n"},
+      // TC06: the scaling's files too
+      {"TC06",
+       scaling,
+       {"-o", file, "-o", dir + "/sub/../bench.md"},
+       "rt: -o: '" + file + "' and '" + dir + "/sub/../bench.md' name the same file\n"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = c.run;
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << c.partition;
+    EXPECT_EQ(r.err, c.message) << c.partition;
+    EXPECT_EQ(r.out, "") << c.partition;
+  }
+  // TC07: nothing written: the file untouched, nothing beside it, no file in the current
+  // directory
+  EXPECT_EQ(test::readFile(file), "the previous table");
+  EXPECT_TRUE(std::filesystem::is_empty(dir + "/sub"));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            3);
+  EXPECT_FALSE(std::filesystem::exists(here));
+}
+
 // ---------------------------------------------------------------------------------------------
 // The star scaling
 

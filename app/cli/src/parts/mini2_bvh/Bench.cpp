@@ -105,7 +105,7 @@ void addBenchCommand(CommandLine& rt) {
   command
       ->add_option("-o,--output", args->outputs,
                    "write the table to FILE instead of stdout, in the format of its ending; "
-                   "repeatable (one run, several files)")
+                   "repeatable (one run, several files; each file once)")
       ->type_name("FILE.md|.csv|.json")
       ->allow_extra_args(false);  // one file per -o: `-o x.md galaxy` leaves SCENE alone
   command->add_flag("--scaling", args->scaling,
