@@ -23,8 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using ModelFileTest = testing::ModelFileFixture;
-
 ModelOptions flat() {
   ModelOptions o;
   o.smooth = false;
@@ -64,6 +62,16 @@ std::string expectThrow(const fs::path& file, const ModelOptions& o) {
   ADD_FAILURE() << "no ModelError for " << file;
   return {};
 }
+
+class ModelFileTest : public testing::ModelFileFixture {
+ protected:
+  /// Writes bytes to dir/name and expects reading it (flat) refused with "PATH: " + detail.
+  void expectRefused(const std::string& name, const std::string& bytes,
+                     const std::string& detail) const {
+    const fs::path file = write(name, bytes);
+    EXPECT_EQ(expectThrow(file, flat()), file.string() + ": " + detail) << name;
+  }
+};
 
 // A build without Assimp says how to get it (the other tests are skipped there).
 TEST(ModelFileWithoutAssimp, SaysHowToGetAssimp) {
@@ -218,6 +226,15 @@ const std::set<std::vector<P>> kPlyTriangles{{{0, 0, 0}, {2, 0, 0}, {2, 3, 0}},
                                              {{0, 0, 0}, {2, 3, 0}, {0, 3, 0}},
                                              {{0, 0, 0}, {0, 3, 0}, {0, 0, 5}}};
 
+/// The model the PLY and OFF tests write in each format: 5 vertices, a quad (0 1 2 3) and a
+/// triangle (0 3 4), read flat as kPlyTriangles.
+void expectQuadAndTriangle(const fs::path& file) {
+  const ModelFile m = readModelFile(file, flat());
+  ASSERT_EQ(m.groups.size(), 1u);
+  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 5u);
+  EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
+}
+
 TEST_F(ModelFileTest, AsciiPly) {
   const auto file = write("ascii.ply",
                           "ply\nformat ascii 1.0\nelement vertex 5\n"
@@ -225,10 +242,7 @@ TEST_F(ModelFileTest, AsciiPly) {
                           "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
                           "0 0 0\n2 0 0\n2 3 0\n0 3 0\n0 0 5\n"
                           "4 0 1 2 3\n3 0 3 4\n");
-  const ModelFile m = readModelFile(file, flat());
-  ASSERT_EQ(m.groups.size(), 1u);
-  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 5u);
-  EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
+  expectQuadAndTriangle(file);
 }
 
 std::string le32(std::uint32_t v) {
@@ -255,10 +269,7 @@ TEST_F(ModelFileTest, BinaryLittleEndianPly) {
   for (std::uint32_t i : {0u, 1u, 2u, 3u}) bytes += le32(i);
   bytes += '\x03';
   for (std::uint32_t i : {0u, 3u, 4u}) bytes += le32(i);
-  const ModelFile m = readModelFile(write("binary.ply", bytes), flat());
-  ASSERT_EQ(m.groups.size(), 1u);
-  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 5u);
-  EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
+  expectQuadAndTriangle(write("binary.ply", bytes));
 }
 
 /// A PLY header for 3 vertices and 1 face, in ASCII.
@@ -276,17 +287,13 @@ TEST_F(ModelFileTest, APlyHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
       "property float x\nproperty float y\nproperty float z\n"
       "element face 2\nproperty list uchar int vertex_indices\nend_header\n";
   // 5 vertices of 12 bytes, 2 faces of at least their 1-byte count: 62 bytes.
-  const auto shortBinary = write("short.ply", binaryHeader + std::string(61, '\0'));
-  EXPECT_EQ(expectThrow(shortBinary, flat()),
-            shortBinary.string() +
-                ": the PLY header announces 5 'vertex', 2 'face' (at least 62 bytes of binary "
+  expectRefused("short.ply", binaryHeader + std::string(61, '\0'),
+                "the PLY header announces 5 'vertex', 2 'face' (at least 62 bytes of binary "
                 "data), but 61 bytes follow it");
   // 3 vertices of 3 values and 1 face of its count, two bytes a value, the last without its
   // separator: 3·6 + 2 − 1 = 19 bytes.
-  const auto shortAscii = write("short-ascii.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n");
-  EXPECT_EQ(expectThrow(shortAscii, flat()),
-            shortAscii.string() +
-                ": the PLY header announces 3 'vertex', 1 'face' (at least 19 bytes of ASCII "
+  expectRefused("short-ascii.ply", kPlyHeader + "0 0 0\n1 0 0\n0 1 0\n",
+                "the PLY header announces 3 'vertex', 1 'face' (at least 19 bytes of ASCII "
                 "data), but 18 bytes follow it");
   // A binary file announcing 4·10^9 vertices in 12 bytes (Assimp ran out of memory on it), and
   // an ASCII one announcing 4·10^8 (Assimp took gigabytes and minutes): at once, in memory too.
@@ -295,10 +302,8 @@ TEST_F(ModelFileTest, APlyHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
       "property float x\nproperty float y\nproperty float z\n"
       "element face 1\nproperty list uchar int vertex_indices\nend_header\n" +
       std::string(12, '\0');
-  const auto hugeFile = write("huge.ply", huge);
-  EXPECT_EQ(expectThrow(hugeFile, flat()),
-            hugeFile.string() +
-                ": the PLY header announces 4000000000 'vertex', 1 'face' (at least 48000000001 "
+  expectRefused("huge.ply", huge,
+                "the PLY header announces 4000000000 'vertex', 1 'face' (at least 48000000001 "
                 "bytes of binary data), but 12 bytes follow it");
   const std::string hugeAscii =
       "ply\nformat ascii 1.0\nelement vertex 400000000\n"
@@ -314,13 +319,11 @@ TEST_F(ModelFileTest, APlyHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
                  "2400000001 bytes of ASCII data), but 6 bytes follow it");
   }
   // A count beyond 2^64 and counts whose bytes add up beyond it: the sum stops at 2^64.
-  const auto beyond = write("beyond.ply",
-                            "ply\nformat binary_big_endian 1.0\nelement vertex "
-                            "99999999999999999999\nproperty double x\nelement face "
-                            "9223372036854775807\nproperty list uchar int i\nend_header\n");
-  EXPECT_EQ(expectThrow(beyond, flat()),
-            beyond.string() +
-                ": the PLY header announces 18446744073709551615 'vertex', 9223372036854775807 "
+  expectRefused("beyond.ply",
+                "ply\nformat binary_big_endian 1.0\nelement vertex "
+                "99999999999999999999\nproperty double x\nelement face "
+                "9223372036854775807\nproperty list uchar int i\nend_header\n",
+                "the PLY header announces 18446744073709551615 'vertex', 9223372036854775807 "
                 "'face' (at least 2^64 bytes of binary data), but 0 bytes follow it");
 }
 
@@ -330,38 +333,27 @@ TEST_F(ModelFileTest, OffWithCommentsAndBlankLines) {
   const auto file = write("quad.off",
                           "# a unit square and a triangle above it\nOFF\n5 2 0\n"
                           "0 0 0\n2 0 0\n2 3 0\n\n0 3 0\n0 0 5\n4 0 1 2 3\n3 0 3 4\n");
-  const ModelFile m = readModelFile(file, flat());
-  ASSERT_EQ(m.groups.size(), 1u);
-  EXPECT_EQ(m.groups[0].mesh.vertexCount(), 5u);
-  EXPECT_EQ(cornerSet(m.groups[0].mesh), kPlyTriangles);
+  expectQuadAndTriangle(file);
 }
 
 // Assimp's OFF reader logs these faults and returns a model that is not the file's (an index
 // out of range read as the last vertex, a face dropped, vertices left at the origin): refused.
 TEST_F(ModelFileTest, OffFaultsThatAssimpOnlyLogsAreRefused) {
   const std::string triangle = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n";
-  const auto range = write("range.off", triangle + "3 0 1 7\n3 9 1 8\n");
-  EXPECT_EQ(expectThrow(range, flat()),
-            range.string() +
-                ": OFF: 3 vertex indices of its faces out of range (the file has 3 vertices, "
+  expectRefused("range.off", triangle + "3 0 1 7\n3 9 1 8\n",
+                "OFF: 3 vertex indices of its faces out of range (the file has 3 vertices, "
                 "numbered 0 to 2)");
-  const auto empty = write("empty-face.off", triangle + "3 0 1 2\n0\n");
-  EXPECT_EQ(expectThrow(empty, flat()),
-            empty.string() +
-                ": OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
+  expectRefused("empty-face.off", triangle + "3 0 1 2\n0\n",
+                "OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
                 "not take");
-  const auto ten = write("ten.off",
-                         "OFF\n11 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 1 0\n-1 0 0\n"
-                         "-1 -1 0\n0 -1 0\n1 -1 0\n2 -1 0\n2 0 0\n3 0 1 2\n"
-                         "10 0 1 2 3 4 5 6 7 8 9\n");
-  EXPECT_EQ(expectThrow(ten, flat()),
-            ten.string() +
-                ": OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
+  expectRefused("ten.off",
+                "OFF\n11 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 1 0\n-1 0 0\n"
+                "-1 -1 0\n0 -1 0\n1 -1 0\n2 -1 0\n2 0 0\n3 0 1 2\n"
+                "10 0 1 2 3 4 5 6 7 8 9\n",
+                "OFF: 1 face of no vertex or of more than 9, which Assimp's OFF reader does "
                 "not take");
-  const auto cut = write("cut.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  EXPECT_EQ(expectThrow(cut, flat()),
-            cut.string() +
-                ": OFF: the file has fewer lines than its header announces vertices "
+  expectRefused("cut.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                "OFF: the file has fewer lines than its header announces vertices "
                 "and faces");
 }
 
