@@ -55,14 +55,16 @@ void addBenchCommand(CommandLine& rt) {
       "Renders SCENE (default: the built-in galaxy, 128 pixels wide; --full: the scene's own\n"
       "resolution, the reference report's 1280x720 for the galaxy) with the reference\n"
       "report's rows, its own times beside them for the galaxy: no acceleration on one\n"
-      "thread; threads; threads + CBR; threads + CBR + BVH; and threads + grid (the regular\n"
-      "grid, no report time); Embree 3 (Intel's Embree, a measuring stick, where the build\n"
-      "has it: install libembree-dev, scripts/deps.sh --embree, and reconfigure); then with\n"
-      "every stage's tracer through the BVH on every thread.\n"
+      "thread; threads; threads + CBR; threads + CBR + BVH; then threads + wide BVH, + wide\n"
+      "BVH + light buffers and + grid (no report times); Embree 3 (Intel's Embree, a\n"
+      "measuring stick, where the build has it: install libembree-dev, scripts/deps.sh\n"
+      "--embree, and reconfigure); all of these with the scene's tracer (or --tracer's); then\n"
+      "every stage's tracer through the wide BVH with light buffers on every thread.\n"
       "The course's teapot and bubbles have the rows of the course lecturer's TeapotTest\n"
       "instead, his times beside them (in Java, on his machine): no acceleration on one\n"
       "thread; 2, 3 and 4 threads; threads (every core); then threads + CBR, + CBR + BVH,\n"
-      "+ grid, Embree 3, and every stage's tracer. Columns: row, tracer, accel, threads (that\n"
+      "+ wide BVH, + wide BVH + light buffers, + grid, Embree 3, and every stage's tracer.\n"
+      "Columns: row, tracer, accel, threads (that\n"
       "rendered), wall time, the reference report's time, primary, secondary and shadow rays,\n"
       "rays per second (every ray), BVH nodes (grid cells) visited per ray, speed-up over the\n"
       "first row, pixels differing from the first row's image (rows of its tracer; Embree's\n"
@@ -86,7 +88,7 @@ void addBenchCommand(CommandLine& rt) {
   addSceneArguments(*command, args->scene,
                     "image width in pixels, 1..32768 (default: 128; the scaling's 400)",
                     "image height in pixels, 1..32768 (default: the scene's aspect ratio)",
-                    "the tracer of the first five rows (default: the scene's)");
+                    "the tracer of the rows before the stages' (default: the scene's)");
   // The rows choose the acceleration themselves; SCENE may be left out (the galaxy).
   command->remove_option(command->get_option("--accel"));
   command->get_option("--threads")
