@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <numbers>
 #include <optional>
@@ -317,6 +318,36 @@ TEST(RtAnimate, TheVideoMayGoIntoTheFramesFolderTheCommandMakes) {
   const test::RtResult probe = videoFrameCount(*ffprobe, dir + "/new/v.mp4");
   ASSERT_EQ(probe.exitCode, 0) << probe.err;
   EXPECT_EQ(probe.out, "2\n");
+}
+
+// Ctrl-C while ffmpeg encodes: ffmpeg is ended, the video is not written (an earlier one stays
+// as it was), the frames stay, exit 130. The ffmpeg on PATH here is a stand-in that only waits,
+// so that the signal surely comes while it runs, with or without a real ffmpeg installed.
+TEST(RtAnimate, CtrlCWhileEncodingEndsFfmpegAndWritesNoVideo) {
+  namespace fs = std::filesystem;
+  const std::string dir = freshDirectory("animate-encoding-interrupted");
+  const fs::path bin = fs::absolute(fs::path(dir) / "bin");
+  fs::create_directories(bin);
+  test::writeText((bin / "ffmpeg").string(), "#!/bin/sh\nexec sleep 60\n");
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  test::writeText(dir + "/v.mp4", "an earlier video");
+  test::RtChild rt(test::Program{{"/usr/bin/env", "PATH=" + bin.string() + ":/usr/bin:/bin", RT_EXE,
+                                  "animate", "galaxy", "--orbit", "30", "--frames", "2", "--width",
+                                  "16", "-o", dir + "/f", "--video", dir + "/v.mp4"}});
+  ASSERT_TRUE(rt.waitForLine(" (2 frames): ")) << rt.err();  // the frames' summary: ffmpeg next
+  rt.signal(SIGINT);
+  EXPECT_EQ(rt.wait(), 130) << rt.err();
+  EXPECT_NE(rt.err().find("rt: interrupted while encoding " + dir +
+                          "/v.mp4 (nothing written to it; the 2 frames are in " + dir + "/f)\n"),
+            std::string::npos)
+      << rt.err();
+  EXPECT_EQ(readFile(dir + "/v.mp4"), "an earlier video");
+  EXPECT_TRUE(fs::is_regular_file(dir + "/f/frame-0000.png"));
+  EXPECT_TRUE(fs::is_regular_file(dir + "/f/frame-0001.png"));
+  // Nothing else in the folder: no temporary video left.
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 3u);  // bin, f, v.mp4
 }
 
 }  // namespace

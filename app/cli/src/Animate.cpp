@@ -85,7 +85,12 @@ int animate(const AnimateArgs& args, const Io& io) {
                             threads > 1 ? "on " + std::to_string(threads) + " threads" : "")
            << "\n";
   if (plan.video) {
-    encodeVideo(plan);
+    if (!encodeVideo(plan, io.stop)) {
+      io.err << "rt: interrupted while encoding " << *plan.video << " (nothing written to it; the "
+             << written << (written == 1 ? " frame is" : " frames are") << " in "
+             << plan.directory.string() << ")\n";
+      return EXIT_INTERRUPTED;
+    }
     if (!args.silent)
       io.err << "rt: wrote " << *plan.video << ": " << written << " frames at " << plan.fps
              << " frames/s (H.264)\n";
@@ -110,7 +115,8 @@ std::string animateCommandDetails() {
          "sequence. --video FILE.mp4 encodes the frames with ffmpeg (H.264, yuv420p, odd\n"
          "sizes padded by a pixel) once they are all written; without ffmpeg it is refused\n"
          "before any frame. Ctrl-C stops within a row: the frames done stay, the one in\n"
-         "progress is not written, the exit code is 130.\n";
+         "progress is not written, the exit code is 130; during the encoding it ends ffmpeg,\n"
+         "and the video is not written (an earlier one stays as it was).\n";
 }
 
 void addAnimateOptions(CLI::App& command, AnimateArgs& into) {

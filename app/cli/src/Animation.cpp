@@ -1,12 +1,14 @@
 // rt animate's plan: the camera path, the frames' folder and the video, checked before any frame.
 #include "cli/Animation.h"
 
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -281,7 +283,7 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
   return plan;
 }
 
-void encodeVideo(const AnimationPlan& plan) {
+bool encodeVideo(const AnimationPlan& plan, const std::atomic<bool>* stop) {
   // ffmpeg picks the container from the name, so the temporary file keeps the ending.
   const fs::path video(*plan.video);
   const fs::path temporary =
@@ -330,17 +332,39 @@ void encodeVideo(const AnimationPlan& plan) {
     ::_exit(127);
   }
   ::close(pipeFd[1]);
+  // ffmpeg's messages, read until it closes its end; every tenth of a second the stop flag is
+  // looked at, and once it is raised ffmpeg is ended (a terminal's Ctrl-C reaches ffmpeg too,
+  // a signal to this process alone does not).
   std::string message;
-  char buffer[4096];
-  ssize_t n;
-  while ((n = ::read(pipeFd[0], buffer, sizeof buffer)) > 0)
+  bool ended = false;
+  for (;;) {
+    if (!ended && stop != nullptr && stop->load()) {
+      ::kill(pid, SIGTERM);
+      ended = true;
+    }
+    pollfd ready{pipeFd[0], POLLIN, 0};
+    const int events = ::poll(&ready, 1, 100);
+    if (events == 0 || (events < 0 && errno == EINTR)) continue;
+    char buffer[4096];
+    const ssize_t n = events < 0 ? 0 : ::read(pipeFd[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
     message.append(buffer, static_cast<std::size_t>(n));
+  }
   ::close(pipeFd[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   std::error_code ec;
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  const bool encoded = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  // Stopped: ffmpeg failed once the flag was raised, or a Ctrl-C or kill ended it.
+  if (!encoded &&
+      (ended || (stop != nullptr && stop->load()) ||
+       (WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM)))) {
+    fs::remove(temporary, ec);
+    return false;
+  }
+  if (!encoded) {
     fs::remove(temporary, ec);
     while (!message.empty() && (message.back() == '\n' || message.back() == '\r'))
       message.pop_back();
@@ -352,6 +376,7 @@ void encodeVideo(const AnimationPlan& plan) {
     fs::remove(temporary, ec);
     throw std::runtime_error("cannot write '" + *plan.video + "': " + ec.message());
   }
+  return true;
 }
 
 }  // namespace rt::cli

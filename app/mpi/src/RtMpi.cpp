@@ -58,6 +58,12 @@ struct World {
   std::vector<std::string> hosts;  ///< rank 0: every rank's host
 };
 
+/// "1 whole frame written to DIR", "3 whole frames written to DIR".
+std::string framesWrittenTo(int written, const std::string& directory) {
+  return std::to_string(written) + (written == 1 ? " whole frame" : " whole frames") +
+         " written to " + directory;
+}
+
 /// A frame whose pixels outweigh a message (1 GiB) is dealt as tiles whatever the frame count.
 constexpr std::uint64_t kMaxWholeFrameBytes = std::uint64_t{1} << 30;
 
@@ -339,16 +345,14 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
     if (outcome.failure) {
       io.err << "rt-mpi: rank " << outcome.failure->rank << " on " << outcome.failure->host << ": "
              << outcome.failure->message << "; "
-             << (job.animate
-                     ? std::to_string(outcome.framesWritten) + " whole frames written to " + target
-                     : "nothing written to " + target)
+             << (job.animate ? framesWrittenTo(outcome.framesWritten, target)
+                             : "nothing written to " + target)
              << "\n";
       code = EXIT_FAILURE_RUNTIME;
     } else if (outcome.interrupted) {
       io.err << "rt-mpi: interrupted after " << donePixels.load() << " of " << total << " pixels; "
-             << (job.animate
-                     ? std::to_string(outcome.framesWritten) + " whole frames written to " + target
-                     : "nothing written to " + target)
+             << (job.animate ? framesWrittenTo(outcome.framesWritten, target)
+                             : "nothing written to " + target)
              << "\n";
       code = EXIT_INTERRUPTED;
     } else {
@@ -362,15 +366,21 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
                                      describeRanks(allThreads))
                << "\n";
       if (!quiet)
-        io.err << "rt-mpi: dealt " << outcome.units << (wholeFrames ? " frames" : " tiles")
-               << " on demand (" << describeShares(outcome.unitsByRank) << "): " << outcome.messages
-               << " messages, " << mebibytes(outcome.bytes) << " through rank 0\n";
+        io.err << "rt-mpi: dealt " << outcome.units << (wholeFrames ? " frame" : " tile")
+               << (outcome.units == 1 ? "" : "s") << " on demand ("
+               << describeShares(outcome.unitsByRank) << "): " << outcome.messages << " messages, "
+               << mebibytes(outcome.bytes) << " through rank 0\n";
       if (job.animate && resolved->plan->video) {
         try {
-          cli::encodeVideo(*resolved->plan);
-          if (!job.silent)
+          if (!cli::encodeVideo(*resolved->plan, &stopFlag())) {
+            io.err << "rt-mpi: interrupted while encoding " << *resolved->plan->video
+                   << " (nothing written to it; " << framesWrittenTo(outcome.framesWritten, target)
+                   << ")\n";
+            code = EXIT_INTERRUPTED;
+          } else if (!job.silent) {
             io.err << "rt-mpi: wrote " << *resolved->plan->video << ": " << outcome.framesWritten
                    << " frames at " << resolved->plan->fps << " frames/s (H.264)\n";
+          }
         } catch (const std::exception& e) {
           io.err << "rt-mpi: " << e.what() << "\n";
           code = EXIT_FAILURE_RUNTIME;

@@ -17,6 +17,7 @@
 /// rt animate renders the frames one after another with the build's render loop; rt-mpi animate
 /// (app/mpi) deals them to ranks. Both resolve the same AnimationPlan.
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -99,8 +100,10 @@ std::vector<CameraSpec> viewPathCameras(const std::vector<CameraSpec>& views, in
 std::optional<std::string> findOnPath(const std::string& name);
 
 /// Encodes plan's frames (all of them) into plan.video with ffmpeg, through a temporary file
-/// renamed at the end. @throws std::runtime_error with ffmpeg's message when it fails (the
-/// frames stay; an existing video is left as it was).
-void encodeVideo(const AnimationPlan& plan);
+/// renamed at the end. @returns true when written; false when stop (if given) was raised, or a
+/// Ctrl-C or a kill ended ffmpeg, before it was done: ffmpeg is ended, nothing is written.
+/// @throws std::runtime_error with ffmpeg's message when it fails. Either way the frames stay
+/// and an existing video is left as it was.
+bool encodeVideo(const AnimationPlan& plan, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace rt::cli
