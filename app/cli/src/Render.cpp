@@ -100,7 +100,7 @@ std::string renderSummary(const std::string& output, int nX, int nY, const Trace
   };
   std::ostringstream os;
   os << "wrote " << output << ": " << nX << "x" << nY << ", tracer " << kind.name << ", "
-     << counts.primary << " primary rays";
+     << counts.primary << (counts.primary == 1 ? " primary ray" : " primary rays");
   if (counts.secondary > 0) os << " (+" << counts.secondary << " reflected/refracted)";
   if (counts.shadow > 0) os << " (+" << counts.shadow << " shadow)";
   os << " in " << formatDuration(seconds);
