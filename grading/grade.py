@@ -15,9 +15,11 @@ Then it prints a table (stage, tests passed / total, points, required, result), 
 files, build and test logs and a Gradescope results.json, prints their paths, and exits with
   0  every required stage passed (an optional stage may have failed);
   1  a required stage failed;
-  2  bad usage: an unknown option or stage, a bad weights file, a stage folder without weight;
-  3  the grader could not work: cmake or ctest missing, an output it could not write.
-With exit 2 or 3 it writes no results.json.
+  2  bad usage: an unknown option or stage, a bad weights file, a stage folder without weight,
+     an output path (--output-dir, --results) that cannot be written: checked before anything
+     is built or run;
+  3  the grader could not work: cmake or ctest missing, an output it could not write all the same.
+With exit 2 or 3 it writes no results.json (nor a results.json.tmp).
 """
 from __future__ import annotations
 
@@ -357,11 +359,37 @@ def gradescope(stages: list[Stage], absent: list[str], report: str, seconds: flo
 
 
 def write_json(path: Path, data: dict) -> None:
-    """Writes through a temporary file and a rename: never a half-written results.json."""
+    """Writes through a temporary file and a rename: never a half-written results.json, and no
+    temporary file left when the write fails or is interrupted."""
     path.parent.mkdir(parents=True, exist_ok=True)
     temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-    temporary.replace(path)
+    try:
+        temporary.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+        temporary.replace(path)
+    except BaseException:
+        try:
+            if not temporary.is_dir():  # a directory of that name was there before: not ours
+                temporary.unlink(missing_ok=True)
+        except OSError:
+            pass
+        raise
+
+
+def output_problem(path: Path, directory: bool) -> str | None:
+    """Why the grader could not write the file (directory: the folder) path, its missing folders
+    made on the way, or None. Checked before any build: a bad path is bad usage."""
+    if path.is_dir() and not directory:
+        return "it is a directory"
+    if path.exists() and not path.is_dir() and directory:
+        return "it is not a directory"
+    folder = path if directory else path.parent
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent  # the folder that the missing ones would be made in
+    if not folder.is_dir():
+        return f"'{folder}' is not a directory"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"the directory '{folder}' is not writable"
+    return None
 
 
 # ---- Command line ----------------------------------------------------------------------------
@@ -398,8 +426,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                "Gradescope: scripts/grade --source-dir /autograder/submission --no-deps "
                "--results /autograder/results/results.json\n\n"
                "Exit codes: 0 every required stage passed; 1 a required stage failed; 2 bad "
-               "usage, bad weights file or a stage folder without weight; 3 the grader could "
-               "not work (cmake missing, an output not writable). No results.json with 2 or 3.")
+               "usage, bad weights file, a stage folder without weight or an output path that "
+               "cannot be written (checked first); 3 the grader could not work (cmake missing, "
+               "an output it could not write all the same). No results.json with 2 or 3.")
     parser.add_argument("-S", "--source-dir", type=Path, default=REPO, metavar="DIR",
                         help="the checkout to grade (default: the one holding this grader)")
     parser.add_argument("-B", "--build-dir", type=Path, metavar="DIR",
@@ -434,10 +463,18 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     args = parser.parse_args(argv)
     if not args.source_dir.is_dir():
         raise UsageError(f"--source-dir: '{args.source_dir}' is not a directory")
+    given_output, given_results = args.output_dir, args.results
     args.source_dir = args.source_dir.resolve()
     args.build_dir = (args.build_dir or args.source_dir / "build" / "grade").resolve()
     args.output_dir = (args.output_dir or args.build_dir / "grading").resolve()
     args.results = (args.results or args.output_dir / "results.json").resolve()
+    if not args.list:  # --list writes nothing
+        # As rt says it: the option, then the path as given (or the default it stands for).
+        for option, given, path, directory in (
+                ("--output-dir", given_output, args.output_dir, True),
+                ("--results", given_results, args.results, False)):
+            if problem := output_problem(path, directory):
+                raise UsageError(f"{option}: cannot write '{given or path}': {problem}")
     args.jobs = args.jobs or default_jobs()
     return args
 
@@ -468,7 +505,11 @@ def main(argv: list[str]) -> int:
         except OSError as e:
             raise CannotRun(f"cannot create the output directory {logs}: {e.strerror}") from None
         for weight in weights:  # a JUnit file of an earlier run is no result of this one
-            (args.output_dir / f"junit-{weight.label}.xml").unlink(missing_ok=True)
+            junit = args.output_dir / f"junit-{weight.label}.xml"
+            try:
+                junit.unlink(missing_ok=True)
+            except OSError as e:
+                raise CannotRun(f"cannot remove the earlier {junit}: {e.strerror}") from None
 
         start = time.monotonic()
         grade(stages, args, logs)

@@ -28,7 +28,8 @@ and lines that keep the compiler quiet about what the stubs leave unused (parame
 
 Exit codes: 0 written; 1 the handout could not be written (git failed, a file could not be
 copied); 2 bad usage: an unknown stage, a stage without solution regions, a malformed marker, an
-output directory that is not empty or lies inside the repository, a source that is no checkout.
+output directory that is not empty or lies inside the repository, a source that is no checkout;
+130 interrupted (Ctrl-C): nothing is written, the output directory is as it was.
 """
 from __future__ import annotations
 
@@ -43,7 +44,7 @@ import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
-EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
 
 REPO = Path(__file__).resolve().parent.parent  # the checkout holding this script
 STAGE_FOLDER = re.compile(r"^(stage|mini)([0-9]+)_\w+$")  # stage03_intersections
@@ -433,8 +434,21 @@ def write_handout(source: Path, stage_name: str, out: Path) -> str:
         raise UsageError(f"{stage.folder} has no solution region (// BEGIN SOLUTION ... "
                          f"// END SOLUTION) in its sources: there is nothing to hand out")
 
+    throws = sum(1 for _, r in stubs if r.kind == "hint")
+    lines = [f"make-handout: wrote {out}: the course up to {stage.folder}",
+             f"  {stage.folder}: {len(stubs)} solution region(s) replaced "
+             f"({throws} throw, {len(stubs) - throws} TODO)"]
+    if below:
+        lines.append(f"  kept with their solutions: {', '.join(s.folder for s in below)} "
+                     f"({removed} marker pair(s) removed)")
+    if later:
+        lines.append(f"  left out: {', '.join(s.folder for s in later)}")
+
+    # Copied into a hidden directory beside DIR, renamed to DIR when whole: an error or a Ctrl-C
+    # on the way removes it, and DIR is as it was.
     out.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    emptied = False
     try:
         for f in files:
             if f.split("/", 1)[0] in left_out:
@@ -448,23 +462,27 @@ def write_handout(source: Path, stage_name: str, out: Path) -> str:
                 shutil.copymode(src, dst)
             else:
                 shutil.copy2(src, dst)
+        # mkdtemp makes the directory 0700; DIR gets the mode mkdir would have given it.
+        os.chmod(tmp, 0o777 & ~current_umask())
         if out.is_dir():
             out.rmdir()  # empty, checked above
+            emptied = True
         os.rename(tmp, out)
-    except OSError as e:
+    except BaseException as e:  # an OSError, or KeyboardInterrupt: nothing is left behind
         shutil.rmtree(tmp, ignore_errors=True)
-        raise Failed(f"cannot write the handout into {out}: {e}") from None
-
-    throws = sum(1 for _, r in stubs if r.kind == "hint")
-    lines = [f"make-handout: wrote {out}: the course up to {stage.folder}",
-             f"  {stage.folder}: {len(stubs)} solution region(s) replaced "
-             f"({throws} throw, {len(stubs) - throws} TODO)"]
-    if below:
-        lines.append(f"  kept with their solutions: {', '.join(s.folder for s in below)} "
-                     f"({removed} marker pair(s) removed)")
-    if later:
-        lines.append(f"  left out: {', '.join(s.folder for s in later)}")
+        if emptied and not out.exists():
+            out.mkdir()  # the empty directory the caller gave back as it was
+        if isinstance(e, OSError):
+            raise Failed(f"cannot write the handout into {out}: {e}") from None
+        raise
     return "\n".join(lines)
+
+
+def current_umask() -> int:
+    """The process's umask (reading it means setting it: it is set back at once)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
 
 
 def list_regions(source: Path, stage_name: str | None) -> str:
@@ -516,6 +534,10 @@ def main(argv: list[str]) -> int:
     except Failed as e:
         print(f"make-handout: error: {e}", file=sys.stderr)
         return EXIT_FAILED
+    except KeyboardInterrupt:
+        where = f"; nothing written to {args.out}" if args.out is not None and not args.list else ""
+        print(f"make-handout: interrupted{where}", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":

@@ -16,7 +16,9 @@ The page shows, from what the repository holds (nothing is rendered here):
     stages' tracers as rays per second; then a table.
 Whatever is missing (a README, a linked image, the galaxy pair, the timing) is left out of the
 page, said so on it, and listed on stderr as "make-gallery: missing: ...". The exit code is 0
-then too; 2 for bad usage or a timing file that does not follow the schema below.
+then too; 2 for bad usage (a --bench FILE that is not there, an output the page cannot be written
+to, checked before any work) or a timing file that does not follow the schema below; 1 when
+writing the page fails all the same. The page is written whole or not at all.
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
@@ -309,8 +311,8 @@ def timing_charts(bench: dict) -> list[str]:
                    "larger image) in the report, in Java on its own machine.</p>")
         out.append('<figure class="chart">' + reference_chart(plt, bench, timed) + "</figure>")
     if others:
-        out.append(f"<p>Each stage's tracer on the same scene: they cast different rays, so "
-                   f"rays per second compares them.</p>")
+        out.append("<p>Each stage's tracer on the same scene: they cast different rays, so "
+                   "rays per second compares them.</p>")
         out.append('<figure class="chart">' + rate_chart(plt, bench, others) + "</figure>")
     return out
 
@@ -437,6 +439,37 @@ def page(root: Path, bench_path: Path, page_dir: Path) -> str:
             "\n".join(body) + "\n</body>\n</html>\n")
 
 
+def output_problem(output: Path) -> str | None:
+    """Why the page cannot be written to output (its missing folders are made), or None."""
+    if output.is_dir():
+        return "it is a directory"
+    folder = output.parent
+    while not folder.exists() and folder != folder.parent:
+        folder = folder.parent  # the folder that the missing ones would be made in
+    if not folder.is_dir():
+        return f"'{folder}' is not a directory"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"the directory '{folder}' is not writable"
+    return None
+
+
+def write_page(output: Path, text: str) -> None:
+    """Through a temporary file and a rename: written whole or not at all, and the temporary
+    file removed whatever stops it (an error, a Ctrl-C)."""
+    output.parent.mkdir(parents=True, exist_ok=True)
+    temporary = output.with_name(output.name + ".tmp")
+    try:
+        temporary.write_text(text, encoding="utf-8")
+        temporary.replace(output)
+    except BaseException:
+        try:
+            if not temporary.is_dir():  # a directory of that name was there before: not ours
+                temporary.unlink(missing_ok=True)
+        except OSError:
+            pass
+        raise
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="scripts/make-gallery.py",
                                      description="Writes the gallery page, docs/index.html.")
@@ -454,15 +487,27 @@ def main(argv: list[str]) -> int:
         return 2
     output = (args.output or root / "docs" / "index.html").resolve()
     bench = (args.bench or root / "docs" / "bench.json").resolve()
+    # The default timing file may be missing (the page says so); one the user named may not.
+    if args.bench and not bench.is_file():
+        why = "it is a directory" if bench.is_dir() else "no such file"
+        print(f"{PROGRAM}: --bench: cannot read '{args.bench}': {why}", file=sys.stderr)
+        return 2
+    # As rt says it: the option, then the path as given.
+    cannot_write = f"-o: cannot write '{args.output}'" if args.output else \
+        f"cannot write '{output}'"
+    if problem := output_problem(output):
+        print(f"{PROGRAM}: {cannot_write}: {problem}", file=sys.stderr)
+        return 2
     try:
         text = page(root, bench, output.parent)
     except BadInput as e:
         print(f"{PROGRAM}: {e}", file=sys.stderr)
         return 2
-    output.parent.mkdir(parents=True, exist_ok=True)
-    temporary = output.with_name(output.name + ".tmp")
-    temporary.write_text(text, encoding="utf-8")
-    temporary.replace(output)  # written whole or not at all
+    try:
+        write_page(output, text)
+    except OSError as e:
+        print(f"{PROGRAM}: {cannot_write}: {e.strerror or e}", file=sys.stderr)
+        return 1
     print(f"{PROGRAM}: wrote {output}")
     return 0
 

@@ -287,6 +287,49 @@ class GalleryTest(unittest.TestCase):
         self.assertEqual(r.returncode, 2)
         self.assertEqual(r.stderr, f"make-gallery: {bad}: rows[3].name: expected str, got None\n")
 
+    def test_a_timing_file_named_must_be_there(self) -> None:
+        # EP01: only the default docs/bench.json may be missing; --bench FILE is asked for
+        output = self.tmp / "bench-absent" / "index.html"
+        absent = self.tmp / "absent.json"
+        r = make_gallery("--root", self.root, "--bench", absent, "-o", output)
+        self.assertEqual((r.returncode, r.stdout), (2, ""))
+        self.assertEqual(r.stderr, f"make-gallery: --bench: cannot read '{absent}': no such "
+                                   "file\n")
+        r = make_gallery("--root", self.root, "--bench", self.tmp, "-o", output)
+        self.assertEqual((r.returncode, r.stdout), (2, ""))
+        self.assertEqual(r.stderr, f"make-gallery: --bench: cannot read '{self.tmp}': it is a "
+                                   "directory\n")
+        self.assertFalse(output.parent.exists())
+
+    def test_an_output_that_cannot_be_written_is_refused_before_any_work(self) -> None:
+        # EP01: as rt says it, exit 2, nothing on stdout, no missing: lines (no work done), and
+        # no temporary file left
+        folder = self.tmp / "a-folder"
+        folder.mkdir()
+        plain = self.tmp / "a-file"
+        plain.write_text("not a folder\n", encoding="utf-8")
+        for output, why in ((folder, "it is a directory"),
+                            (plain / "index.html", f"'{plain}' is not a directory"),
+                            (plain / "deeper" / "index.html", f"'{plain}' is not a directory")):
+            with self.subTest(str(output)):
+                r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output)
+                self.assertEqual((r.returncode, r.stdout), (2, ""))
+                self.assertEqual(r.stderr, f"make-gallery: -o: cannot write '{output}': {why}\n")
+        self.assertEqual(sorted(p.name for p in self.tmp.iterdir() if p.name.endswith(".tmp")),
+                         [])
+        self.assertEqual(list(folder.iterdir()), [])
+
+    def test_a_write_that_fails_late_leaves_no_temporary_file(self) -> None:
+        # EP01: the temporary file's name taken by a directory: exit 1, the page not written,
+        # that directory left as it was
+        output = self.tmp / "late" / "index.html"
+        (self.tmp / "late" / "index.html.tmp").mkdir(parents=True)
+        r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output)
+        self.assertEqual(r.returncode, 1)
+        self.assertTrue(r.stderr.endswith(f"make-gallery: -o: cannot write '{output}': Is a "
+                                          "directory\n"), r.stderr)
+        self.assertEqual([p.name for p in output.parent.iterdir()], ["index.html.tmp"])
+
 
 # ---- The browser -------------------------------------------------------------------------------
 

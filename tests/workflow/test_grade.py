@@ -216,6 +216,49 @@ class GradeTest(unittest.TestCase):
     def test_a_bad_option_value_is_a_usage_error(self):
         self.assert_usage_error("--jobs: expected a positive integer, got '0'", "--jobs", "0")
 
+    def test_an_output_that_cannot_be_written_is_a_usage_error_before_anything_runs(self):
+        # Said as rt says it, naming the path and why; nothing configured, built or run, no
+        # results.json.tmp left.
+        folder = self.tmp / "a-folder"
+        folder.mkdir()
+        plain = write(self.tmp / "a-file", "not a folder\n")
+        build = self.tmp / "build-never"
+        cases = (
+            (("--results", folder), f"--results: cannot write '{folder}': it is a directory"),
+            (("--results", plain / "results.json"),
+             f"--results: cannot write '{plain / 'results.json'}': '{plain}' is not a directory"),
+            (("-o", plain), f"--output-dir: cannot write '{plain}': it is not a directory"),
+            (("-o", plain / "deeper" / "grading"),
+             f"--output-dir: cannot write '{plain / 'deeper' / 'grading'}': '{plain}' is not a "
+             "directory"))
+        for args, message in cases:
+            with self.subTest(message):
+                run = grade("-S", FIXTURE, "-B", build, "--weights", self.weights,
+                            "--stage", "stage01", *args)
+                self.assert_exit(run, 2)
+                self.assertEqual(run.stderr, f"grade: error: {message}\n")
+                self.assertEqual(run.stdout, "")
+                self.assertFalse(build.exists())
+        self.assertEqual(list(folder.iterdir()), [])
+        self.assertEqual(sorted(p.name for p in self.tmp.iterdir() if p.name.endswith(".tmp")),
+                         [])
+        # --list writes nothing, so its outputs are not checked.
+        self.assert_exit(grade("-S", FIXTURE, "--weights", self.weights, "--list",
+                               "--results", folder), 0)
+
+    def test_a_results_file_that_fails_late_leaves_no_temporary_file(self):
+        # The temporary file's name taken by a directory: exit 3 after the table, no
+        # results.json, and that directory left as it was.
+        out = self.tmp / "out-late"
+        (out / "results.json.tmp").mkdir(parents=True)
+        run = grade("-S", FIXTURE, "-B", self.build, "--no-build", "--weights", self.weights,
+                    "--stage", "stage01", "-o", out)
+        self.assert_exit(run, 3)
+        self.assertEqual(run.stderr, f"grade: error: cannot write {out / 'results.json'}: Is a "
+                                     "directory\n")
+        self.assertFalse((out / "results.json").exists())
+        self.assertTrue((out / "results.json.tmp").is_dir())
+
     # ---- The repository's own weights ----
 
     def test_the_repository_weights_cover_every_stage_folder_of_the_repository(self):

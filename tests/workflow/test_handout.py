@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 from pathlib import Path
@@ -111,6 +112,27 @@ def make_handout(*args: object) -> subprocess.CompletedProcess:
                            *map(str, args)], capture_output=True, text=True, check=False)
 
 
+# grading/handout.py as make-handout runs it, sending itself SIGINT (a Ctrl-C) while it copies
+# the 3rd file: argv[1] is the script, the rest its arguments.
+INTERRUPTED = """\
+import os, runpy, shutil, signal, sys
+copy2, copied = shutil.copy2, []
+def interrupting_copy2(*args, **kwargs):
+    copied.append(args[0])
+    if len(copied) == 3:
+        os.kill(os.getpid(), signal.SIGINT)
+    return copy2(*args, **kwargs)
+shutil.copy2 = interrupting_copy2
+sys.argv = sys.argv[1:]
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
+
+
+def make_handout_interrupted(*args: object) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", INTERRUPTED, str(REPO / "grading" / "handout.py"),
+                           *map(str, args)], capture_output=True, text=True, check=False)
+
+
 def git(cwd: Path, *args: str) -> None:
     subprocess.run(["git", *args], cwd=cwd, check=True, capture_output=True)
 
@@ -166,6 +188,19 @@ class MakeHandoutTest(unittest.TestCase):
 
     def test_keeps_the_solutions_of_the_stages_below_without_their_markers(self):
         self.assertEqual(self.read("stage01_one/src/One.cpp"), ONE_CPP)
+
+    def test_the_handout_directory_has_the_mode_mkdir_gives_it(self):
+        # Not tempfile.mkdtemp's 0700: 0777 less the umask, as for the folders inside it.
+        mask = os.umask(0o027)
+        try:
+            out = self.tmp / "mode"
+            run = make_handout("--source-dir", self.source, "--stage", "stage02", "--out", out)
+        finally:
+            os.umask(mask)
+        self.assert_exit(run, 0)
+        self.assertEqual(out.stat().st_mode & 0o777, 0o750)
+        self.assertEqual((out / "stage02_two").stat().st_mode & 0o777, 0o750)
+        self.assertEqual(self.out.stat().st_mode & 0o777, 0o777 & ~mask)
 
     def test_copies_the_tests_as_they_are(self):
         self.assertEqual(self.read("stage02_two/tests/TwoTests.cpp"),
@@ -249,6 +284,29 @@ stage02_two (stage02): 5 region(s)
   stage02_two/src/Two.cpp:19  hint: quoted, a "quote" and a \\backslash
   stage02_two/src/Two.cpp:25  hint: longHint, a hint long enough to need a second line for the stub
 """)
+
+    # ---- Interrupted: exit 130, one line, nothing written ----
+
+    def test_a_ctrl_c_while_copying_leaves_nothing_behind(self):
+        out = self.tmp / "interrupted" / "stage02"
+        run = make_handout_interrupted("--source-dir", self.source, "--stage", "stage02",
+                                       "--out", out)
+        self.assert_exit(run, 130)
+        self.assertEqual(run.stderr, f"make-handout: interrupted; nothing written to {out}\n")
+        self.assertEqual(run.stdout, "")
+        self.assertEqual(list(out.parent.iterdir()), [])  # no hidden .stage02.XXXX either
+
+    def test_a_ctrl_c_leaves_an_empty_output_directory_as_it_was(self):
+        out = self.tmp / "interrupted-empty"
+        out.mkdir()
+        run = make_handout_interrupted("--source-dir", self.source, "--stage", "stage02",
+                                       "--out", out)
+        self.assert_exit(run, 130)
+        self.assertEqual(run.stderr, f"make-handout: interrupted; nothing written to {out}\n")
+        self.assertTrue(out.is_dir())
+        self.assertEqual(list(out.iterdir()), [])
+        self.assertEqual(sorted(p.name for p in self.tmp.iterdir()
+                                if p.name.startswith(".interrupted-empty.")), [])
 
     # ---- Refusals: exit 2, a message, nothing written ----
 
