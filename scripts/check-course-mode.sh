@@ -19,27 +19,32 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 ALL_STAGES=(stage01_primitives stage02_geometries stage03_intersections stage04_camera
             stage05_lighting stage06_shadows stage07_reflections mini1_glossy mini2_bvh)
 
-case "${1:-}" in
-  -h | --help) rt_usage; exit 0 ;;
-esac
-
-cd "$RT_ROOT"
-"$RT_ROOT/scripts/deps.sh"
-build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/course}"
+# The arguments are checked before anything is installed or created.
+for arg in "$@"; do
+  case "$arg" in
+    -h | --help) rt_usage; exit 0 ;;
+    -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
+  esac
+done
+# A relative RT_BUILD_DIR is the caller's, not the repository's (the cd below).
+build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/course}")"
 log="$build_dir/course-mode.log"
-mkdir -p "$build_dir"
 
 present=()
 for stage in "${ALL_STAGES[@]}"; do
-  [[ -f "$stage/CMakeLists.txt" ]] && present+=("$stage")
+  [[ -f "$RT_ROOT/$stage/CMakeLists.txt" ]] && present+=("$stage")
 done
 ((${#present[@]})) || rt_die "no stage folder with a CMakeLists.txt under $RT_ROOT"
 wanted=("$@")
 ((${#wanted[@]})) || wanted=("${present[@]}")
 for stage in "${wanted[@]}"; do
-  [[ " ${present[*]} " == *" $stage "* ]] ||
-    rt_die "'$stage' is not a stage folder with a CMakeLists.txt (present: ${present[*]})"
+  [[ -n "$stage" && " ${present[*]} " == *" $stage "* ]] ||
+    rt_bad_usage "'$stage' is not a stage folder with a CMakeLists.txt (present: ${present[*]})"
 done
+
+cd "$RT_ROOT"
+"$RT_ROOT/scripts/deps.sh"
+mkdir -p "$build_dir"
 
 label_of() { echo "${1%%_*}"; }
 

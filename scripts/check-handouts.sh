@@ -29,8 +29,46 @@ set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-case "${1:-}" in
-  -h | --help) rt_usage; exit 0 ;;
+label_of() { echo "${1%%_*}"; }
+
+# The stage folder that NAME names (a folder or its label) among the FOLDERs; nothing when none.
+stage_named() {  # stage_named NAME FOLDER...
+  local name="$1" s
+  shift
+  for s in "$@"; do
+    if [[ -n "$name" && ( "$name" == "$s" || "$name" == "$(label_of "$s")" ) ]]; then
+      echo "$s"
+    fi
+  done
+}
+
+# The arguments and RT_HANDOUT_DIR are checked before anything is installed or created. The
+# stage names against the stage folders on disk: make-handout's list, below, needs python3.
+for arg in "$@"; do
+  case "$arg" in
+    -h | --help) rt_usage; exit 0 ;;
+    -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
+  esac
+done
+on_disk=()
+for dir in "$RT_ROOT"/stage[0-9]*_*/ "$RT_ROOT"/mini[0-9]*_*/; do
+  [[ -f "$dir/CMakeLists.txt" ]] && on_disk+=("$(basename "$dir")")
+done
+for name in "$@"; do
+  [[ -n "$(stage_named "$name" "${on_disk[@]+"${on_disk[@]}"}")" ]] ||
+    rt_bad_usage "'$name' is not a stage of this checkout (present: ${on_disk[*]-none})"
+done
+# A relative RT_HANDOUT_DIR (or TMPDIR) is the caller's, not the repository's (the cd below).
+work="${RT_HANDOUT_DIR:-}"
+[[ -z "$work" ]] || work="$(realpath -m -- "$work")"
+tmp_parent="$(realpath -m -- "${TMPDIR:-/tmp}")"
+if [[ -n "$work" ]]; then
+  place="RT_HANDOUT_DIR=$work"
+else
+  place="TMPDIR=$tmp_parent"
+fi
+case "${work:-$tmp_parent}/" in
+  "$(realpath -- "$RT_ROOT")"/*) rt_die "$place lies inside the repository; a handout goes outside" ;;
 esac
 
 cd "$RT_ROOT"
@@ -46,14 +84,10 @@ while read -r folder _ count _; do
   regions[$folder]="$count"
 done < <(grep -E '^[a-z]+[0-9]+_[A-Za-z0-9_]+ \([a-z]+[0-9]+\): [0-9]+ region' <<<"$listing")
 ((${#present[@]})) || rt_die "no stage folder with a CMakeLists.txt under $RT_ROOT"
-label_of() { echo "${1%%_*}"; }
 named=" "
 for name in "$@"; do
-  found=""
-  for s in "${present[@]}"; do
-    [[ "$name" == "$s" || "$name" == "$(label_of "$s")" ]] && found="$s"
-  done
-  [[ -n "$found" ]] || rt_die "'$name' is not a stage of this checkout (present: ${present[*]})"
+  found="$(stage_named "$name" "${present[@]}")"
+  [[ -n "$found" ]] || rt_bad_usage "'$name' is not a stage of this checkout (present: ${present[*]})"
   named+="$found "
 done
 wanted=()  # in course order; without names, the stages that have solution regions
@@ -68,18 +102,13 @@ done
 ((${#wanted[@]})) || rt_die "no stage to check: none has solution regions"
 last="${wanted[-1]}"  # the reference is checked up to the last stage handed out
 
-work="${RT_HANDOUT_DIR:-}"
 if [[ -z "$work" ]]; then
-  work="$(mktemp -d "${TMPDIR:-/tmp}/rt-handouts.XXXXXX")"
+  work="$(mktemp -d "$tmp_parent/rt-handouts.XXXXXX")"
   remove_work=1
 else
   mkdir -p "$work"
-  work="$(cd "$work" && pwd)"
   remove_work=0
 fi
-case "$work/" in
-  "$RT_ROOT"/*) rt_die "RT_HANDOUT_DIR=$work lies inside the repository; a handout goes outside" ;;
-esac
 
 cmake_args=(-DCMAKE_BUILD_TYPE=Debug "-DCMAKE_CXX_FLAGS_DEBUG=${RT_HANDOUT_OPT:--O1}"
             -DRT_BUILD_TESTS=ON)

@@ -33,8 +33,9 @@ builds=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --width)
-      if [[ $# -lt 2 || ! "$2" =~ ^[1-9][0-9]*$ ]]; then
-        echo "--width needs a positive integer" >&2
+      [[ $# -ge 2 ]] || { echo "--width needs a positive integer" >&2; usage; }
+      if [[ ! "$2" =~ ^[1-9][0-9]*$ ]]; then
+        echo "--width needs a positive integer, got '$2'" >&2
         usage
       fi
       width="$2"
@@ -42,6 +43,8 @@ while [[ $# -gt 0 ]]; do
       ;;
     --keep)
       [[ $# -ge 2 ]] || { echo "--keep needs a directory" >&2; usage; }
+      # An empty name would quietly fall back to a temporary directory, removed at the end.
+      [[ -n "$2" ]] || { echo "--keep needs a directory, got ''" >&2; usage; }
       keep="$2"
       shift 2
       ;;
@@ -56,7 +59,11 @@ for rt in "${builds[@]}"; do
 done
 
 if [[ -n "$keep" ]]; then
-  mkdir -p "$keep"
+  if [[ -e "$keep" && ! -d "$keep" ]]; then
+    echo "--keep: '$keep' exists and is not a directory" >&2
+    exit 2
+  fi
+  mkdir -p "$keep" 2>/dev/null || { echo "--keep: cannot create the directory '$keep'" >&2; exit 2; }
   out="$keep"
 else
   out="$(mktemp -d)"

@@ -5,6 +5,9 @@
 # build and test jobs: the number of cores unless RT_JOBS is already set), and defines
 #   rt_banner TEXT      a banner line on stdout
 #   rt_die TEXT         an error line on stderr, then exit 1
+#   rt_bad_usage TEXT   an error line on stderr, then exit 2 (bad usage: an option or argument)
+#   rt_abspath PATH     PATH made absolute against the current directory (it need not exist):
+#                       a path the caller gave (an argument, RT_BUILD_DIR) read before a cd
 #   rt_now              seconds since the epoch, with a fraction
 #   rt_elapsed START    the time since START (from rt_now) as "12.3 s" or "4 min 05 s"
 
@@ -16,6 +19,19 @@ rt_banner() { printf '\n==== %s ====\n' "$*"; }
 rt_die() {
   printf '%s: error: %s\n' "$(basename "$0")" "$*" >&2
   exit 1
+}
+
+rt_bad_usage() {
+  printf '%s: error: %s\n' "$(basename "$0")" "$*" >&2
+  exit 2
+}
+
+rt_abspath() {
+  if [[ "$1" == /* ]]; then
+    printf '%s\n' "$1"
+  else
+    printf '%s\n' "$PWD/$1"
+  fi
 }
 
 rt_now() { date +%s.%N; }

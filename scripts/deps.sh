@@ -35,6 +35,12 @@ while (($#)); do
     --video) packages+=(ffmpeg) ;;
     --pretend-missing)
       (($# >= 2)) || { echo "deps.sh: --pretend-missing needs a package name" >&2; exit 2; }
+      # A package name, not the next option: `--pretend-missing --dry-run` must not lose the dry
+      # run (and then really install).
+      if [[ -z "$2" || "$2" == -* ]]; then
+        echo "deps.sh: --pretend-missing needs a package name, got '$2'" >&2
+        exit 2
+      fi
       pretend+=("$2")
       shift
       ;;
@@ -43,6 +49,7 @@ while (($#)); do
       exit 0
       ;;
     -*) echo "deps.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    '') echo "deps.sh: an empty package name (see --help)" >&2; exit 2 ;;
     *) packages+=("$1") ;;
   esac
   shift

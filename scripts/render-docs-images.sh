@@ -19,24 +19,30 @@
 #    `rt render SCENE` with that line's options only.
 # 3. The pictures of mini2_bvh's trees (bvh-top.png, bvh-leaves.png, bvh-wide-root.png), drawn by
 #    mini2_bvh_picture, when the build has mini2_bvh.
-# A README link to an image of docs/images/ that does not exist is reported. --list prints what
-# would be rendered and renders nothing. Set RT_BUILD_DIR to build somewhere other than
-# build/release.
+# A README link to an image of docs/images/ that does not exist is reported. --list (anywhere
+# among the arguments) prints what would be rendered and renders nothing; it still builds rt,
+# whose `rt list` and `rt export` name the scenes. Set RT_BUILD_DIR to build somewhere other than
+# build/release (a relative path is the caller's).
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+# --list and --help wherever they are; every other argument is an option of `rt render`.
 list_only=0
-case "${1:-}" in
-  -h | --help) rt_usage; exit 0 ;;
-  --list) list_only=1; shift ;;
-esac
-options=("$@")
+options=()
+for arg in "$@"; do
+  case "$arg" in
+    -h | --help) rt_usage; exit 0 ;;
+    --list) list_only=1 ;;
+    *) options+=("$arg") ;;
+  esac
+done
 ((${#options[@]})) || options=(--width 500)
+# A relative RT_BUILD_DIR is the caller's, not the repository's (the cd below).
+build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
 
 cd "$RT_ROOT"
 "$RT_ROOT/scripts/deps.sh"
-build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/release}"
 cmake --preset release -B "$build_dir" >/dev/null
 cmake --build "$build_dir" --target rt --parallel "$RT_JOBS" >/dev/null ||
   rt_die "building rt failed (run: cmake --build $build_dir --target rt)"

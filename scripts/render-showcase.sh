@@ -9,7 +9,8 @@
 # SCENE it renders the showcase scene, the galaxy in a glass box (1280 x 720, diffused glass), at
 # its full resolution on every core (or the first scene `rt list` prints when there is no galaxy:
 # a course cut before mini1_glossy). SCENE is a built-in name or a .json file; the options go to
-# `rt render` (for example --width 640 --height 360, --threads 1, --accel none). Set
+# `rt render` (for example --width 640 --height 360, --threads 1, --accel none); -o FILE (or
+# --output FILE) writes FILE instead of images/NAME.png. Relative paths are the caller's. Set
 # RT_BUILD_DIR to build somewhere other than build/release.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
@@ -18,18 +19,46 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 # The most advanced scene the repository has; move it forward as the stages grow.
 SHOWCASE=galaxy
 
-case "${1:-}" in
-  -h | --help) rt_usage; exit 0 ;;
-esac
-
-# A scene file named relative to the caller's directory keeps working after the cd below.
-if (($#)) && [[ -f "$1" ]]; then
-  set -- "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" "${@:2}"
+# The arguments are checked before anything is installed or built. Paths the caller gives (a
+# scene file, -o FILE, RT_BUILD_DIR) are the caller's: made absolute before the cd below.
+scene=""
+if (($#)) && [[ "$1" != -* ]]; then
+  scene="$1"
+  shift
+  [[ -n "$scene" ]] || rt_bad_usage "an empty SCENE (a built-in scene's name or a .json file)"
+  if [[ -f "$scene" ]]; then
+    scene="$(cd "$(dirname "$scene")" && pwd)/$(basename "$scene")"
+  elif [[ "$scene" == *.json ]]; then
+    rt_bad_usage "no scene file '$scene'"
+  fi
 fi
+# The caller's -o/--output replaces images/NAME.png; the other options go to `rt render` as given.
+out=""
+options=()
+while (($#)); do
+  case "$1" in
+    -h | --help) rt_usage; exit 0 ;;
+    -o | --output)
+      (($# >= 2)) || rt_bad_usage "$1 needs a file name"
+      [[ "$2" != -* ]] || rt_bad_usage "$1 needs a file name, got '$2'"
+      file="$2"
+      shift
+      ;;
+    -o?*) file="${1#-o}" ;;
+    --output=*) file="${1#--output=}" ;;
+    *) options+=("$1"); shift; continue ;;
+  esac
+  [[ -n "$file" ]] || rt_bad_usage "-o/--output needs a file name, got ''"
+  [[ -z "$out" ]] || rt_bad_usage "-o/--output given twice ('$given' and '$file')"
+  given="$file"
+  out="$(rt_abspath "$file")"
+  shift
+done
+build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
+
 cd "$RT_ROOT"
 "$RT_ROOT/scripts/deps.sh"
 
-build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/release}"
 rt_banner "Configuring (release preset) in $build_dir"
 cmake --preset release -B "$build_dir" >/dev/null
 rt_banner "Building rt"
@@ -42,19 +71,18 @@ rt="$build_dir/bin/rt"
 # A scene's line starts with its name; an indented line lists its parameters.
 scenes="$("$rt" list | awk '!/^ / { print $1 }')"
 [[ -n "$scenes" ]] || rt_die "'rt list' printed no scene"
-if (($#)) && [[ "$1" != -* ]]; then
-  scene="$1"
-  shift
-elif grep -qx -- "$SHOWCASE" <<<"$scenes"; then
+if [[ -z "$scene" ]] && grep -qx -- "$SHOWCASE" <<<"$scenes"; then
   scene="$SHOWCASE"
-else
+elif [[ -z "$scene" ]]; then
   scene="$(head -n 1 <<<"$scenes")"
   echo "render-showcase.sh: no scene '$SHOWCASE' yet; rendering the first one, '$scene'"
 fi
 
-mkdir -p "$RT_ROOT/images"
-out="$RT_ROOT/images/$(basename "$scene" .json).png"
+if [[ -z "$out" ]]; then
+  mkdir -p "$RT_ROOT/images"
+  out="$RT_ROOT/images/$(basename "$scene" .json).png"
+fi
 rt_banner "Rendering $scene"
 start="$(rt_now)"
-"$rt" render "$scene" -o "$out" "$@"
+"$rt" render "$scene" -o "$out" "${options[@]+"${options[@]}"}"
 echo "Rendered $scene in $(rt_elapsed "$start"): $out"

@@ -19,11 +19,13 @@ case "${1:-}" in
   -h | --help) rt_usage; exit 0 ;;
 esac
 
+# A relative RT_BUILD_DIR is the caller's, not the repository's (the cd below).
+build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
+
 cd "$RT_ROOT"
 # python3: scripts/grade and the workflow tests; python3-matplotlib: the gallery's charts
 "$RT_ROOT/scripts/deps.sh" --mpi --video python3 python3-matplotlib
 
-build_dir="${RT_BUILD_DIR:-$RT_ROOT/build/release}"
 rt_banner "Configuring (release preset) in $build_dir"
 cmake --preset release -B "$build_dir" >/dev/null
 rt_banner "Building"

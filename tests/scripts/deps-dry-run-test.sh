@@ -81,5 +81,15 @@ STUB_MISSING="" check "TC11 dry run, --mpi and --video" 0 \
 # TC12: the test command's packages (scripts/test-all.sh) with OpenMPI's headers missing
 STUB_MISSING="libopenmpi-dev" check "TC12 dry run, OpenMPI missing" 0 \
   "deps.sh: dry run: missing: libopenmpi-dev" --dry-run --mpi --video python3 python3-matplotlib
+# TC13: --pretend-missing takes a package name, not the next option: the dry run stays on (with
+# make missing, a lost --dry-run would run apt-get)
+STUB_MISSING="make" check "TC13 --pretend-missing refuses an option as its package" 2 \
+  "deps.sh: --pretend-missing needs a package name, got '--dry-run'" --pretend-missing --dry-run
+# TC14: nor an empty name
+STUB_MISSING="" check "TC14 --pretend-missing refuses an empty package" 2 \
+  "deps.sh: --pretend-missing needs a package name, got ''" --dry-run --pretend-missing ""
+# TC15: an empty extra package is refused, not checked
+STUB_MISSING="" check "TC15 an empty package name" 2 \
+  "deps.sh: an empty package name (see --help)" --dry-run ""
 
 ((failures == 0))

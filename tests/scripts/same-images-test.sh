@@ -38,5 +38,12 @@ check "a scene without sampling stays the same" 1 "^two-color +same$" \
 check "one build is not a comparison" 2 "give at least two rt executables" "$rt"
 check "a missing executable" 2 "not an executable: $work/none" "$rt" "$work/none"
 check "a bad width" 2 "--width needs a positive integer" --width 0 "$rt" "$rt"
+check "a bad width is named" 2 "^--width needs a positive integer, got 'abc'$" \
+  --width abc "$rt" "$rt"
+check "an empty --keep is refused, not a temporary directory" 2 \
+  "^--keep needs a directory, got ''$" --keep "" "$rt" "$rt"
+touch "$work/file"
+check "--keep naming a file" 2 "^--keep: '$work/file' exists and is not a directory$" \
+  --keep "$work/file" "$rt" "$rt"
 
 finish
