@@ -20,12 +20,7 @@ ALL_STAGES=(stage01_primitives stage02_geometries stage03_intersections stage04_
             stage05_lighting stage06_shadows stage07_reflections mini1_glossy mini2_bvh)
 
 # The arguments are checked before anything is installed or created.
-for arg in "$@"; do
-  case "$arg" in
-    -h | --help) rt_usage; exit 0 ;;
-    -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
-  esac
-done
+rt_operands "$@"
 # A relative RT_BUILD_DIR is the caller's, not the repository's (the cd below).
 build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/course}")"
 log="$build_dir/course-mode.log"

@@ -44,12 +44,7 @@ stage_named() {  # stage_named NAME FOLDER...
 
 # The arguments and RT_HANDOUT_DIR are checked before anything is installed or created. The
 # stage names against the stage folders on disk: make-handout's list, below, needs python3.
-for arg in "$@"; do
-  case "$arg" in
-    -h | --help) rt_usage; exit 0 ;;
-    -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
-  esac
-done
+rt_operands "$@"
 on_disk=()
 for dir in "$RT_ROOT"/stage[0-9]*_*/ "$RT_ROOT"/mini[0-9]*_*/; do
   [[ -f "$dir/CMakeLists.txt" ]] && on_disk+=("$(basename "$dir")")

@@ -6,6 +6,8 @@
 #   rt_banner TEXT      a banner line on stdout
 #   rt_die TEXT         an error line on stderr, then exit 1
 #   rt_bad_usage TEXT   an error line on stderr, then exit 2 (bad usage: an option or argument)
+#   rt_operands ARG...  for a script that takes no options: --help (anywhere) prints its header
+#                       and exits 0; any other argument that starts with - is bad usage (exit 2)
 #   rt_abspath PATH     PATH made absolute against the current directory (it need not exist):
 #                       a path the caller gave (an argument, RT_BUILD_DIR) read before a cd
 #   rt_now              seconds since the epoch, with a fraction
@@ -24,6 +26,16 @@ rt_die() {
 rt_bad_usage() {
   printf '%s: error: %s\n' "$(basename "$0")" "$*" >&2
   exit 2
+}
+
+rt_operands() {
+  local arg
+  for arg in "$@"; do
+    case "$arg" in
+      -h | --help) rt_usage; exit 0 ;;
+      -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
+    esac
+  done
 }
 
 rt_abspath() {
