@@ -227,6 +227,17 @@ TEST(RtAnimate, RefusesAPathItCannotMakeBeforeAnyFrame) {
   const test::RtResult frame = runRt(
       {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--frame", "3", "-o", dir + "/f"});
   EXPECT_EQ(frame.err, "rt: --frame: expected a frame from 0 to 2 (--frames 3), got 3\n");
+  const test::RtResult negative = runRt(
+      {"animate", "galaxy", "--orbit", "30", "--frames", "3", "--frame", "-1", "-o", dir + "/f"});
+  EXPECT_EQ(negative.exitCode, 2);
+  EXPECT_EQ(negative.err, "rt: --frame: expected a frame from 0 to 2 (--frames 3), got -1\n");
+  // One frame cannot be on both ends of a path through views
+  const test::RtResult single = runRt(
+      {"animate", "galaxy", "--through", "main,side,above", "--frames", "1", "-o", dir + "/f"});
+  EXPECT_EQ(single.exitCode, 2);
+  EXPECT_EQ(single.err,
+            "rt: --through: a path through 3 views starts on 'main' and ends on 'above', which "
+            "takes at least 2 frames; got --frames 1 (one view alone: rt render --view main)\n");
   // Numbers: not a number, in rt's words; out of range, the value as given
   const test::RtResult word =
       runRt({"animate", "galaxy", "--orbit", "abc", "--frames", "3", "-o", dir + "/f"});
@@ -348,6 +359,59 @@ TEST(RtAnimate, CtrlCWhileEncodingEndsFfmpegAndWritesNoVideo) {
   std::size_t entries = 0;
   for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 3u);  // bin, f, v.mp4
+}
+
+// Ctrl-C during the first frame: no frame written, and the folder the run made is removed; a
+// folder that was there before stays, empty or not.
+TEST(RtAnimate, CtrlCBeforeTheFirstFrameLeavesNoFolderOfItsOwn) {
+  namespace fs = std::filesystem;
+  const std::string dir = freshDirectory("animate-first-frame-interrupted");
+  fs::create_directory(dir + "/empty");
+  fs::create_directory(dir + "/kept");
+  test::writeText(dir + "/kept/notes.txt", "mine");
+  for (const std::string name : {"made", "empty", "kept"}) {
+    SCOPED_TRACE(name);
+    // The galaxy at 1280x720 on one thread: many seconds a frame, so the signal comes in frame 0.
+    test::RtChild rt(test::Program{{RT_EXE, "animate", "galaxy", "--orbit", "30", "--frames", "2",
+                                    "--threads", "1", "-o", dir + "/" + name}});
+    ASSERT_TRUE(rt.waitForLine("rt: animating galaxy (2 frames")) << rt.err();
+    rt.signal(SIGINT);
+    EXPECT_EQ(rt.wait(), 130) << rt.err();
+    const std::string left = name == "made" ? "no frame written; " + dir +
+                                                  "/made, which this run "
+                                                  "made, removed"
+                                            : "no frame written to " + dir + "/" + name;
+    EXPECT_NE(rt.err().find("rt: interrupted after 0 of 2 frames (" + left + ")\n"),
+              std::string::npos)
+        << rt.err();
+  }
+  EXPECT_FALSE(fs::exists(dir + "/made"));
+  EXPECT_TRUE(fs::is_directory(dir + "/empty"));
+  EXPECT_TRUE(fs::is_empty(dir + "/empty"));
+  EXPECT_EQ(readFile(dir + "/kept/notes.txt"), "mine");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir + "/kept"))
+    ++entries;
+  EXPECT_EQ(entries, 1u);
+}
+
+// A refusal that comes once the frames' folder is made (here a video in it with the wrong
+// ending, checked after the folder exists) leaves no folder either.
+TEST(RtAnimate, ARefusalAfterTheFolderIsMadeRemovesIt) {
+  namespace fs = std::filesystem;
+  const std::string dir = freshDirectory("animate-refused-in-folder");
+  const fs::path bin = fs::absolute(fs::path(dir) / "bin");
+  fs::create_directories(bin);
+  test::writeText((bin / "ffmpeg").string(), "#!/bin/sh\nexit 0\n");  // found, never run
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  test::RtOptions options;
+  options.path = bin.string();
+  const test::RtResult r = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2", "-o",
+                                  dir + "/f", "--video", dir + "/f/v.avi"},
+                                 options);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("v.avi"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/f"));
 }
 
 }  // namespace

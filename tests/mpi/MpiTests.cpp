@@ -283,6 +283,21 @@ TEST_F(RtMpi, CtrlCOnMpirunStopsEveryRankAndLeavesTheImageAsItWas) {
   EXPECT_TRUE(ranksRunning(out).empty());
 }
 
+TEST_F(RtMpi, CtrlCOnMpirunBeforeAnyFrameLeavesNoFolderOfItsOwn) {
+  const std::string frames = path("frames");
+  RtChild job(Program{mpirun(2, {"animate", "galaxy", "--orbit", "30", "--frames", "2", "--width",
+                                 "480", "--threads", "1", "-o", frames})});
+  ASSERT_TRUE(job.waitForLine("rt-mpi: animating galaxy (2 frames")) << job.err();
+  job.signal(SIGINT);
+  EXPECT_NE(job.wait(), 0) << job.err();
+  EXPECT_NE(
+      job.err().find("pixels; no frame written; " + frames + ", which this run made, removed"),
+      std::string::npos)
+      << job.err();
+  EXPECT_FALSE(fs::exists(frames));
+  EXPECT_TRUE(ranksRunning(frames).empty());
+}
+
 TEST_F(RtMpi, AnimateEncodesTheVideoOnRankZero) {
   if (runProgram({"/bin/sh", "-c", "command -v ffmpeg && command -v ffprobe"}).exitCode != 0)
     GTEST_SKIP() << "ffmpeg is not installed (scripts/deps.sh --video installs it)";

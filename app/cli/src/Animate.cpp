@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <ostream>
 
@@ -40,7 +41,8 @@ int animate(const AnimateArgs& args, const Io& io) {
   int threads = 1;
   std::size_t written = 0;
   bool interrupted = false;
-  {
+  try {
+    // Stopped as this block is left, before anything else is printed.
     std::unique_ptr<ProgressMonitor> progress;
     if (!quiet) {
       io.err << "rt: animating " << args.scene.argument << " (" << plan.frames.size()
@@ -68,13 +70,16 @@ int animate(const AnimateArgs& args, const Io& io) {
       finishImage(camera, doc, args.gridLines, plan.framePath(k));
       ++written;
     }
-  }  // the progress thread is stopped here, before anything else is printed
+  } catch (...) {
+    if (written == 0) plan.settleUnfinished(0);  // a failed first frame leaves no folder behind
+    throw;
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (interrupted) {
-    io.err << "rt: interrupted after " << written << " of " << plan.frames.size()
-           << " frames (each written whole to " << plan.directory.string()
-           << "; the one in progress not written)\n";
+    io.err << "rt: interrupted after " << written << " of " << plan.frames.size() << " frames ("
+           << plan.settleUnfinished(written)
+           << (written > 0 ? "; the one in progress not written)\n" : ")\n");
     return EXIT_INTERRUPTED;
   }
   if (!args.silent)
@@ -108,15 +113,16 @@ std::string animateCommandDetails() {
          "                   orbits the point at its focal distance, or its view plane's)\n"
          "  --through A,B,C  the scene's named views in that order (all: every view), every\n"
          "                   quantity interpolated linearly; the first frame is view A and\n"
-         "                   the last view C, exactly\n\n"
+         "                   the last view C, exactly (so at least 2 frames)\n\n"
          "Frames go to DIR/frame-0000.png, ... (at least 4 digits), each written whole\n"
          "(a temporary file renamed). A frame is a function of the scene, the options and\n"
          "its number only: --frame K renders frame K alone, the same bytes as in the whole\n"
          "sequence. --video FILE.mp4 encodes the frames with ffmpeg (H.264, yuv420p, odd\n"
          "sizes padded by a pixel) once they are all written; without ffmpeg it is refused\n"
          "before any frame. Ctrl-C stops within a row: the frames done stay, the one in\n"
-         "progress is not written, the exit code is 130; during the encoding it ends ffmpeg,\n"
-         "and the video is not written (an earlier one stays as it was).\n";
+         "progress is not written, the exit code is 130 (with no frame written, a folder\n"
+         "this run made is removed); during the encoding it ends ffmpeg, and the video is\n"
+         "not written (an earlier one stays as it was).\n";
 }
 
 void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
@@ -135,8 +141,10 @@ void addAnimateOptions(CLI::App& command, AnimateArgs& into) {
       ->type_name("N")
       ->required()
       ->transform(integerValidator(1, MAX_FRAMES));
+  // Any integer here: resolveAnimation names the range that --frames gives.
   addOptional(command, "--frame", into.frame, "render only frame K (0-based) of the path", "K")
-      ->transform(integerValidator(0, MAX_FRAMES - 1));
+      ->transform(
+          integerValidator(std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
   addOptional(command, "-o,--output", into.output,
               "the frames' folder, created if missing (default: SCENE-frames)", "DIR");
   CLI::Option* video =

@@ -165,6 +165,17 @@ int AnimationPlan::frameDigits() const {
   return std::max(4, static_cast<int>(std::to_string(last).size()));
 }
 
+std::string AnimationPlan::settleUnfinished(std::size_t written) const {
+  const std::string dir = directory.string();
+  if (written > 0)
+    return std::to_string(written) + (written == 1 ? " whole frame" : " whole frames") +
+           " written to " + dir;
+  std::error_code ec;
+  if (madeDirectory && fs::is_empty(directory, ec) && fs::remove(directory, ec))
+    return "no frame written; " + dir + ", which this run made, removed";
+  return "no frame written to " + dir;
+}
+
 std::optional<std::string> findOnPath(const std::string& name) {
   const char* path = std::getenv("PATH");
   if (!path) return std::nullopt;
@@ -239,6 +250,13 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
         applyResolution(c, doc.camera.nX, doc.camera.nY);
       views.push_back(c);
     }
+    // One frame cannot be both ends of the path.
+    if (args.frames == 1)
+      throw UsageError("--through: a path through " + std::to_string(views.size()) +
+                       " views starts on '" + names.front() + "' and ends on '" + names.back() +
+                       "', which takes at least 2 frames; got --frames 1 (one view alone: rt "
+                       "render --view " +
+                       names.front() + ")");
     plan.cameras = viewPathCameras(views, args.frames);
   }
   if (args.frame) {
@@ -276,10 +294,18 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
           "only");
     plan.ffmpeg = *ffmpeg;
   }
-  if (!fs::exists(plan.directory, ec) && !fs::create_directory(plan.directory, ec))
-    throw UsageError("-o: cannot create the directory '" + dir + "': " + ec.message());
-  if (videoInFrames) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
-  checkOutputWritable(plan.framePath(plan.frames.front()), PNG_IMAGE, "-o");
+  if (!fs::exists(plan.directory, ec)) {
+    if (!fs::create_directory(plan.directory, ec))
+      throw UsageError("-o: cannot create the directory '" + dir + "': " + ec.message());
+    plan.madeDirectory = true;
+  }
+  try {
+    if (videoInFrames) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
+    checkOutputWritable(plan.framePath(plan.frames.front()), PNG_IMAGE, "-o");
+  } catch (...) {
+    plan.settleUnfinished(0);  // a refusal leaves no folder behind
+    throw;
+  }
   return plan;
 }
 

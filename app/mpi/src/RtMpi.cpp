@@ -58,12 +58,6 @@ struct World {
   std::vector<std::string> hosts;  ///< rank 0: every rank's host
 };
 
-/// "1 whole frame written to DIR", "3 whole frames written to DIR".
-std::string framesWrittenTo(int written, const std::string& directory) {
-  return std::to_string(written) + (written == 1 ? " whole frame" : " whole frames") +
-         " written to " + directory;
-}
-
 /// A frame whose pixels outweigh a message (1 GiB) is dealt as tiles whatever the frame count.
 constexpr std::uint64_t kMaxWholeFrameBytes = std::uint64_t{1} << 30;
 
@@ -342,17 +336,19 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const std::string target =
         job.animate ? resolved->plan->directory.string() : resolved->outputs.front();
+    // The frames a stopped or failed animation leaves (its folder removed when it holds none).
+    const auto settled = [&](int written) {
+      return resolved->plan->settleUnfinished(static_cast<std::size_t>(written));
+    };
     if (outcome.failure) {
       io.err << "rt-mpi: rank " << outcome.failure->rank << " on " << outcome.failure->host << ": "
              << outcome.failure->message << "; "
-             << (job.animate ? framesWrittenTo(outcome.framesWritten, target)
-                             : "nothing written to " + target)
+             << (job.animate ? settled(outcome.framesWritten) : "nothing written to " + target)
              << "\n";
       code = EXIT_FAILURE_RUNTIME;
     } else if (outcome.interrupted) {
       io.err << "rt-mpi: interrupted after " << donePixels.load() << " of " << total << " pixels; "
-             << (job.animate ? framesWrittenTo(outcome.framesWritten, target)
-                             : "nothing written to " + target)
+             << (job.animate ? settled(outcome.framesWritten) : "nothing written to " + target)
              << "\n";
       code = EXIT_INTERRUPTED;
     } else {
@@ -374,8 +370,7 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
         try {
           if (!cli::encodeVideo(*resolved->plan, &stopFlag())) {
             io.err << "rt-mpi: interrupted while encoding " << *resolved->plan->video
-                   << " (nothing written to it; " << framesWrittenTo(outcome.framesWritten, target)
-                   << ")\n";
+                   << " (nothing written to it; " << settled(outcome.framesWritten) << ")\n";
             code = EXIT_INTERRUPTED;
           } else if (!job.silent) {
             io.err << "rt-mpi: wrote " << *resolved->plan->video << ": " << outcome.framesWritten

@@ -67,11 +67,17 @@ struct AnimationPlan {
   std::optional<std::string> video;  ///< the video's path, when asked
   std::string ffmpeg;                ///< the ffmpeg found on PATH (when a video is asked)
   double fps = 30;
+  bool madeDirectory = false;  ///< the folder was missing and resolveAnimation made it
 
   /// DIR/frame-0007.png: the frame's number with at least 4 digits (as many as the last needs).
   std::string framePath(int k) const;
   /// How many digits the frames' numbers have: at least 4, as many as the last frame needs.
   int frameDigits() const;
+  /// What a run stopped or failed after `written` frames leaves, for its message: "2 whole
+  /// frames written to DIR". With none written, the folder is removed when this run made it
+  /// and it is still empty ("no frame written; DIR, which this run made, removed"); a folder
+  /// that was there before stays ("no frame written to DIR").
+  std::string settleUnfinished(std::size_t written) const;
 };
 
 /// Resolves args: the request (as rt render's, nothing written by it), the path (exactly one of
