@@ -378,10 +378,13 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC26",
        {"render", "two-color", "--threads", "1025"},
        "rt: --threads: expected an integer from 0 to 1024, got '1025'\n"},
-      // TC27: a negative thread count, for probe too (which takes the same scene options)
+      // TC27: probe takes no thread count, by pixel or by ray (it traces on one thread)
       {"TC27",
-       {"probe", "two-color", "--pixel", "0,0", "--threads", "-1"},
-       "rt: --threads: expected an integer from 0 to 1024, got '-1'\n"},
+       {"probe", "two-color", "--pixel", "0,0", "--threads", "2"},
+       "rt: unknown option '--threads' for rt probe (see rt probe --help)\n"},
+      {"TC27",
+       {"probe", "two-color", "--ray", "0,0,0", "0,0,1", "--threads", "1"},
+       "rt: unknown option '--threads' for rt probe (see rt probe --help)\n"},
       // TC28: light buffers neither on nor off
       {"TC28",
        {"render", "two-color", "--light-buffers", "maybe"},
@@ -399,9 +402,9 @@ TEST(CommandTests, probeByRayRefusesTheOptionsThatChooseAPixel) {
   // The galaxy has views, so --view main alone would be accepted.
   const std::vector<std::string> byRay{"probe", "galaxy", "--ray", "0,0,0", "0,0,-1"};
   // TC01: each option a ray given directly leaves without effect (the camera, its image, the
-  // pixel's samples, the render's threads): exit 2, the pair named, nothing printed
+  // pixel's samples): exit 2, the pair named, nothing printed
   const std::vector<std::pair<std::string, std::string>> refused{
-      {"--view", "main"}, {"--width", "8"}, {"--height", "8"}, {"--seed", "3"}, {"--threads", "2"}};
+      {"--view", "main"}, {"--width", "8"}, {"--height", "8"}, {"--seed", "3"}};
   for (const auto& [option, value] : refused) {
     std::vector<std::string> args = byRay;
     args.insert(args.end(), {option, value});

@@ -103,8 +103,9 @@ void addProbeCommand(CommandLine& rt) {
       "probe", "trace one ray through a scene and print what it hits, as JSON",
       "Give exactly one of --ray and --pixel. Numbers may be negative and are separated by\n"
       "commas without spaces: rt probe two-color --ray -1,0.5,-2 0,0,1\n"
-      "--view, --width, --height and --seed (and --threads, from mini project 2 on) are refused\n"
-      "with --ray: its ray meets no camera and is traced once, as sample 0 with seed 0.\n\n"
+      "--view, --width, --height and --seed are refused with --ray: its ray meets no camera\n"
+      "and is traced once, as sample 0 with seed 0. The ray, or the pixel's samples, are\n"
+      "traced on this thread: probe takes no --threads.\n\n"
       "Output:\n"
       "  {\"ray\": {\"origin\": [x, y, z], \"direction\": [x, y, z]},\n"
       "   \"hits\": [{\"t\": .., \"point\": [..], \"normal\": [..], \"geometry\": INDEX,\n"
@@ -126,12 +127,16 @@ void addProbeCommand(CommandLine& rt) {
   addSceneArguments(*command, args->scene, "image width for --pixel (default: the scene's)",
                     "image height for --pixel (default: the scene's)",
                     "the tracer that computes color (default: the scene's)");
+  // One ray, or one pixel's samples, is traced on this thread: the render's threads (the
+  // scene option of mini project 2 on) would change nothing, so probe does not take them.
+  if (CLI::Option* threads = command->get_option_no_throw("--threads"))
+    command->remove_option(threads);
   // A ray given directly has no camera, image or pixel, and its colour is the tracer's for one
-  // sample (RayTracer::traceRay(ray): seed 0) on this thread: the options that choose the
-  // camera (--view), its image's size, the samples' seed or the render's threads (mini 2 on)
-  // would change nothing. The tracer, the scene's parameters and the acceleration do.
-  for (const char* name : {"--view", "--width", "--height", "--seed", "--threads"})
-    if (CLI::Option* pixelOnly = command->get_option_no_throw(name)) ray->excludes(pixelOnly);
+  // sample (RayTracer::traceRay(ray): seed 0): the options that choose the camera (--view), its
+  // image's size or the samples' seed would change nothing. The tracer, the scene's parameters
+  // and the acceleration do.
+  for (const char* name : {"--view", "--width", "--height", "--seed"})
+    ray->excludes(command->get_option(name));
 }
 
 }  // namespace rt::cli
