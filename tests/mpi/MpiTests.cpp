@@ -234,22 +234,33 @@ TEST_F(RtMpi, ARankOutOfMemoryBuildingTheSceneIsNamedAndNothingIsWritten) {
                                    "-np",
                                    "1",
                                    RT_MPI_EXE};
-  const std::vector<std::string> args{
-      "render", "galaxy", "--param", "stars=4000000", "--width", "32", "-o", path("oom.png"), "-q"};
-  command.insert(command.end(), args.begin(), args.end());
-  command.insert(command.end(),
-                 {":", "-np", "1", "sh", "-c",
-                  std::string("ulimit -v 400000 && exec \"$0\" \"$@\""), RT_MPI_EXE});
-  command.insert(command.end(), args.begin(), args.end());
-  const RtResult r = runProgram(command);
-  EXPECT_NE(r.exitCode, 0);
-  const std::vector<std::string> lines = rtMpiLines(r.err);
-  ASSERT_EQ(lines.size(), 1u) << r.err;
   char host[256] = {};
   ::gethostname(host, sizeof host - 1);
-  EXPECT_EQ(lines[0],
-            "rt-mpi: rank 1 on " + std::string(host) + ": cannot build the scene: out of memory");
+  const std::string failure =
+      "rt-mpi: rank 1 on " + std::string(host) + ": cannot build the scene: out of memory";
+  // A render, then an animation, whose frames' folder rank 0 made before the failure.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> jobs{
+      {{"render", "galaxy", "--param", "stars=4000000", "--width", "32", "-o", path("oom.png"),
+        "-q"},
+       failure},
+      {{"animate", "galaxy", "--orbit", "30", "--frames", "2", "--param", "stars=4000000",
+        "--width", "32", "-o", path("oom-frames"), "-q"},
+       failure + "; no frame written; " + path("oom-frames") + ", which this run made, removed"}};
+  for (const auto& [args, message] : jobs) {
+    SCOPED_TRACE(args.front());
+    std::vector<std::string> job = command;
+    job.insert(job.end(), args.begin(), args.end());
+    job.insert(job.end(), {":", "-np", "1", "sh", "-c",
+                           std::string("ulimit -v 400000 && exec \"$0\" \"$@\""), RT_MPI_EXE});
+    job.insert(job.end(), args.begin(), args.end());
+    const RtResult r = runProgram(job);
+    EXPECT_NE(r.exitCode, 0);
+    const std::vector<std::string> lines = rtMpiLines(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0], message);
+  }
   EXPECT_FALSE(fs::exists(path("oom.png")));
+  EXPECT_FALSE(fs::exists(path("oom-frames")));
 }
 
 TEST_F(RtMpi, ARankKilledMidRenderFailsTheJobAndNothingIsWritten) {

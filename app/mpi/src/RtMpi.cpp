@@ -261,9 +261,13 @@ int runJob(const World& world, Distributed& d, const JobRequest& job, const cli:
     }
   }
   if (const std::optional<RankFailure> failed = firstFailure(error, world.hosts, world.comm)) {
-    if (world.rank == 0)
-      io.err << "rt-mpi: rank " << failed->rank << " on " << failed->host << ": " << failed->message
-             << "\n";
+    if (world.rank == 0) {
+      io.err << "rt-mpi: rank " << failed->rank << " on " << failed->host << ": "
+             << failed->message;
+      // An animation's folder, made by rank 0's checks, is not left behind empty.
+      if (job.animate && resolved) io.err << "; " << resolved->plan->settleUnfinished(0);
+      io.err << "\n";
+    }
     return EXIT_FAILURE_RUNTIME;
   }
 
