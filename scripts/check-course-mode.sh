@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Checks course mode: a repository cut after any stage builds and passes its tests.
 #
-#   scripts/check-course-mode.sh [STAGE_FOLDER]...
+#   scripts/check-course-mode.sh [STAGE]...
 #
 # For each stage folder present (stage01_primitives ... stage07_reflections, mini1_glossy,
-# mini2_bvh), in order, or only the ones named: configure one reused build tree (build/course,
+# mini2_bvh), in order, or only the ones named (folder or label, as check-handouts.sh takes
+# them): configure one reused build tree (build/course,
 # or RT_BUILD_DIR) with -DRT_LAST_STAGE=<folder>, build everything, then for every stage built so
 # far check that `ctest -L <label>` selects at least one test and passes, and that no test of a
 # later stage exists in that configuration (and, before mini2_bvh, no rt-mpi target). The label
@@ -30,18 +31,18 @@ for stage in "${ALL_STAGES[@]}"; do
   [[ -f "$RT_ROOT/$stage/CMakeLists.txt" ]] && present+=("$stage")
 done
 ((${#present[@]})) || rt_die "no stage folder with a CMakeLists.txt under $RT_ROOT"
-wanted=("$@")
-((${#wanted[@]})) || wanted=("${present[@]}")
-for stage in "${wanted[@]}"; do
-  [[ -n "$stage" && " ${present[*]} " == *" $stage "* ]] ||
-    rt_bad_usage "'$stage' is not a stage folder with a CMakeLists.txt (present: ${present[*]})"
+wanted=()
+for name in "$@"; do
+  stage="$(rt_stage_named "$name" "${present[@]}")"
+  [[ -n "$stage" ]] || rt_bad_usage "'$name' is not a stage folder with a CMakeLists.txt, nor" \
+    "its label (present: ${present[*]})"
+  wanted+=("$stage")
 done
+((${#wanted[@]})) || wanted=("${present[@]}")
 
 cd "$RT_ROOT"
 "$RT_ROOT/scripts/deps.sh"
 mkdir -p "$build_dir"
-
-label_of() { echo "${1%%_*}"; }
 
 fail() {
   printf '\nCOURSE MODE FAILED for RT_LAST_STAGE=%s: %s\n' "$1" "$2" >&2
@@ -79,13 +80,13 @@ for stage in "${wanted[@]}"; do
   # stage's (cross-stage tests, for example). A stage label beyond $stage is a leak.
   allowed=()
   for s in "${present[@]}"; do
-    allowed+=("$(label_of "$s")")
+    allowed+=("$(rt_label_of "$s")")
     [[ "$s" == "$stage" ]] && break
   done
   later=()
   past=0
   for s in "${ALL_STAGES[@]}"; do
-    ((past)) && later+=("$(label_of "$s")")
+    ((past)) && later+=("$(rt_label_of "$s")")
     [[ "$s" == "$stage" ]] && past=1
   done
   labels="$(ctest --test-dir "$build_dir" -N --print-labels | sed -n 's/^ \{1,\}//p')"

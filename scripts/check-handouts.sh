@@ -29,19 +29,6 @@ set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-label_of() { echo "${1%%_*}"; }
-
-# The stage folder that NAME names (a folder or its label) among the FOLDERs; nothing when none.
-stage_named() {  # stage_named NAME FOLDER...
-  local name="$1" s
-  shift
-  for s in "$@"; do
-    if [[ -n "$name" && ( "$name" == "$s" || "$name" == "$(label_of "$s")" ) ]]; then
-      echo "$s"
-    fi
-  done
-}
-
 # The arguments and RT_HANDOUT_DIR are checked before anything is installed or created. The
 # stage names against the stage folders on disk: make-handout's list, below, needs python3.
 rt_operands "$@"
@@ -50,7 +37,7 @@ for dir in "$RT_ROOT"/stage[0-9]*_*/ "$RT_ROOT"/mini[0-9]*_*/; do
   [[ -f "$dir/CMakeLists.txt" ]] && on_disk+=("$(basename "$dir")")
 done
 for name in "$@"; do
-  [[ -n "$(stage_named "$name" "${on_disk[@]+"${on_disk[@]}"}")" ]] ||
+  [[ -n "$(rt_stage_named "$name" "${on_disk[@]+"${on_disk[@]}"}")" ]] ||
     rt_bad_usage "'$name' is not a stage of this checkout (present: ${on_disk[*]-none})"
 done
 # A relative RT_HANDOUT_DIR (or TMPDIR) is the caller's, not the repository's (the cd below).
@@ -81,7 +68,7 @@ done < <(grep -E '^[a-z]+[0-9]+_[A-Za-z0-9_]+ \([a-z]+[0-9]+\): [0-9]+ region' <
 ((${#present[@]})) || rt_die "no stage folder with a CMakeLists.txt under $RT_ROOT"
 named=" "
 for name in "$@"; do
-  found="$(stage_named "$name" "${present[@]}")"
+  found="$(rt_stage_named "$name" "${present[@]}")"
   [[ -n "$found" ]] || rt_bad_usage "'$name' is not a stage of this checkout (present: ${present[*]})"
   named+="$found "
 done
@@ -132,7 +119,7 @@ fail() {  # fail STAGE WHAT [LOG]
 build_tests() {  # build_tests DIR STAGE
   local dir="$1" last="$2" targets=() s
   for s in "${present[@]}"; do
-    targets+=("$(label_of "$s")_tests")
+    targets+=("$(rt_label_of "$s")_tests")
     [[ "$s" == "$last" ]] && break
   done
   cmake -S "$dir" -B "$dir/build" "${cmake_args[@]}" >"$dir/configure.log" 2>&1 || return 1
@@ -155,7 +142,7 @@ run_label() {  # run_label DIR LABEL
 check_labels() {  # check_labels DIR STAGE MODE (reference|handout)
   local dir="$1" last="$2" mode="$3" s label result passed total ok=0
   for s in "${present[@]}"; do
-    label="$(label_of "$s")"
+    label="$(rt_label_of "$s")"
     result="$(run_label "$dir" "$label")"
     read -r passed total <<<"${result:-0 0}"
     if ((total == 0)); then
@@ -205,7 +192,7 @@ echo "  reference: built in $built, tested in $(rt_elapsed "$start")"
 summary+=("$(printf '%-10s %-22s %-12s %s' reference "build $built" "" "every stage passes")")
 
 for stage in "${wanted[@]}"; do
-  label="$(label_of "$stage")"
+  label="$(rt_label_of "$stage")"
   rt_banner "Handout of $stage"
   dir="$work/$label"
   rm -rf "$dir"
@@ -248,7 +235,7 @@ done
 rt_banner "Handouts"
 printf '%s\n' "${summary[@]}"
 for s in "${skipped[@]+"${skipped[@]}"}"; do
-  printf '%-10s not handed out: %s has no solution region yet\n' "$(label_of "$s")" "$s"
+  printf '%-10s not handed out: %s has no solution region yet\n' "$(rt_label_of "$s")" "$s"
 done
 if ((${#failures[@]})); then
   echo "Handouts: FAILED for ${failures[*]} (kept for inspection: $work)" >&2

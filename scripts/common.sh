@@ -8,6 +8,11 @@
 #   rt_bad_usage TEXT   an error line on stderr, then exit 2 (bad usage: an option or argument)
 #   rt_operands ARG...  for a script that takes no options: --help (anywhere) prints its header
 #                       and exits 0; any other argument that starts with - is bad usage (exit 2)
+#   rt_label_of FOLDER  a stage folder's label: its name up to the first underscore
+#                       (stage04_camera -> stage04, mini1_glossy -> mini1)
+#   rt_stage_named NAME FOLDER...
+#                       the FOLDER that NAME names, by its folder name or its label (a trailing
+#                       slash, as a shell's completion leaves it, is allowed); nothing when none
 #   rt_abspath PATH     PATH made absolute against the current directory (it need not exist):
 #                       a path the caller gave (an argument, RT_BUILD_DIR) read before a cd
 #   rt_now              seconds since the epoch, with a fraction
@@ -35,6 +40,20 @@ rt_operands() {
       -h | --help) rt_usage; exit 0 ;;
       -*) rt_bad_usage "unknown option '$arg' (see --help)" ;;
     esac
+  done
+}
+
+rt_label_of() { echo "${1%%_*}"; }
+
+rt_stage_named() {
+  local name="$1" s
+  shift
+  while [[ "$name" == */ ]]; do name="${name%/}"; done
+  [[ -n "$name" ]] || return 0
+  for s in "$@"; do
+    if [[ "$name" == "$s" || "$name" == "$(rt_label_of "$s")" ]]; then
+      echo "$s"
+    fi
   done
 }
 

@@ -88,21 +88,25 @@ reaches_deps() {
 script="$scripts/check-course-mode.sh"
 e='^check-course-mode\.sh: error:'
 present='\(present: stage01_primitives( [a-z0-9_]+)*\)$'
-usage "course: --help" 0 '^  scripts/check-course-mode\.sh \[STAGE_FOLDER\]\.\.\.$' --help
-usage "course: -h after a stage folder" 0 '^  scripts/check-course-mode\.sh \[STAGE_FOLDER\]' \
+usage "course: --help" 0 '^  scripts/check-course-mode\.sh \[STAGE\]\.\.\.$' --help
+usage "course: -h after a stage folder" 0 '^  scripts/check-course-mode\.sh \[STAGE\]' \
   stage01_primitives -h
 usage "course: an unknown option is named" 2 "$e unknown option '--bogus' \(see --help\)$" --bogus
 usage "course: an unknown option after a stage folder" 2 "$e unknown option '-x' \(see --help\)$" \
   stage01_primitives -x
 usage "course: an unknown stage folder is named, with those present" 2 \
-  "$e 'stage99_nosuch' is not a stage folder with a CMakeLists\.txt $present" \
+  "$e 'stage99_nosuch' is not a stage folder with a CMakeLists\.txt, nor its label $present" \
   stage99_nosuch
-usage "course: a label is not a folder name" 2 "$e 'stage01' is not a stage folder" stage01
+usage "course: a folder's name with more after it is not its label" 2 \
+  "$e 'stage01_primitivesX' is not a stage folder" stage01_primitivesX
 usage "course: every name is checked before any work" 2 \
   "$e 'stage99_nosuch' is not a stage folder" stage01_primitives stage99_nosuch
 usage "course: an empty name" 2 "$e '' is not a stage folder" ""
 reaches_deps "course: a good stage folder goes on to deps.sh" 1 '^deps\.sh: installing missing' \
   stage01_primitives
+reaches_deps "course: a label names its folder" 1 '^deps\.sh: installing missing' stage01
+reaches_deps "course: a folder with a trailing slash (a shell's completion)" 1 \
+  '^deps\.sh: installing missing' stage01_primitives/
 
 # ---- scripts/check-handouts.sh: stage folders or labels -------------------------------------
 script="$scripts/check-handouts.sh"
@@ -126,6 +130,8 @@ RT_HANDOUT_DIR="$repo/build/usage-test-handouts" usage \
   "handouts: RT_HANDOUT_DIR inside the repository" 1 \
   "$e RT_HANDOUT_DIR=$repo/build/usage-test-handouts lies inside the repository" stage01
 reaches_deps "handouts: a good label goes on to deps.sh" 1 '^deps\.sh: installing missing' stage01
+reaches_deps "handouts: a folder with a trailing slash (a shell's completion)" 1 \
+  '^deps\.sh: installing missing' stage01_primitives//
 
 # ---- scripts/render-showcase.sh: SCENE, its -o, the rest for `rt render` --------------------
 script="$scripts/render-showcase.sh"
