@@ -18,23 +18,36 @@ files, build and test logs and a Gradescope results.json, prints their paths, an
   2  bad usage: an unknown option or stage, a bad weights file, a stage folder without weight,
      an output path (--output-dir, --results) that cannot be written: checked before anything
      is built or run;
-  3  the grader could not work: cmake or ctest missing, an output it could not write all the same.
-With exit 2 or 3 it writes no results.json (nor a results.json.tmp).
+  3  the grader could not work: cmake or ctest missing, an output it could not write all the same;
+  130  interrupted (Ctrl-C): the configure, build or ctest running then is ended with its whole
+     process group (the tests, the compilers), one line on stderr says so; the logs and JUnit
+     files of the stages done stay;
+  141  the reader of its output went away (`scripts/grade | head -1`): it stops at its next line,
+     quietly, as a program that SIGPIPE ends.
+With exit 2, 3 or 130 it writes no results.json (nor a results.json.tmp). Each command it runs
+has a process group of its own, which a Ctrl-C of the grader alone ends too; SIGHUP (a closed
+terminal) and SIGTERM are passed on to that group, and then end the grader as they did before.
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+
+# The Python tools' shared module, beside this file (found however this file is run).
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from tooling import EXIT_INTERRUPTED, output_problem, run_command_line, write_whole  # noqa: E402
 
 EXIT_OK, EXIT_REQUIRED_FAILED, EXIT_USAGE, EXIT_CANNOT_RUN = 0, 1, 2, 3
 
@@ -43,6 +56,10 @@ STAGE_FOLDER = re.compile(r"^((?:stage|mini)[0-9]+)_\w+$")  # stage03_intersecti
 STAGE_LABEL = re.compile(r"^(?:stage|mini)[0-9]+$")
 OUTPUT_CHARS = 4000  # of a test's output or a log's tail kept in results.json
 LOG_LINES = 60  # lines of a failed build's log kept in results.json
+STOP_SECONDS = 5  # after a Ctrl-C, what a command's process group has to end before SIGKILL
+# What reached the commands run when they shared the grader's process group: a closed terminal
+# hangs up the whole job, a kill of the job terminates it. The grader passes them on.
+FORWARDED = (signal.SIGHUP, signal.SIGTERM)
 
 
 class UsageError(Exception):
@@ -148,7 +165,8 @@ def read_weights(path: Path) -> list[Weight]:
 
 
 def stage_folders(source: Path) -> dict[str, str]:
-    """Label -> folder of every stage folder with a CMakeLists.txt at the top of the checkout."""
+    """Label -> folder of every stage folder with a CMakeLists.txt at the top of the checkout;
+    a checkout without one is a UsageError naming it."""
     folders: dict[str, str] = {}
     for entry in sorted(source.iterdir()):
         match = STAGE_FOLDER.match(entry.name)
@@ -158,6 +176,10 @@ def stage_folders(source: Path) -> dict[str, str]:
                 raise UsageError(f"two stage folders carry the label {label}: "
                                  f"{folders[label]} and {entry.name}")
             folders[label] = entry.name
+    if not folders:
+        raise UsageError(f"--source-dir: '{source}' has no stage folder: expected at its top a "
+                         "folder stageNN_name or miniN_name (such as stage01_primitives) with a "
+                         "CMakeLists.txt")
     return folders
 
 
@@ -172,9 +194,6 @@ def plan(weights: list[Weight], folders: dict[str, str], wanted: list[str],
     stages = [Stage(w.label, folders[w.label], w.points, w.required)
               for w in weights if w.label in folders]
     absent = [w.label for w in weights if w.label not in folders]
-    if not stages:
-        raise UsageError("no stage folder (stageNN_name or miniN_name with a CMakeLists.txt) "
-                         "in the checkout")
     if wanted:
         chosen = set()
         for name in wanted:
@@ -193,18 +212,63 @@ def say(text: str) -> None:
     print(f"grade: {text}", flush=True)
 
 
+def signal_group(process: subprocess.Popen, signum: int) -> None:
+    """signum to the process group of process (its id is the process's: child() starts it so),
+    if some process of it is left."""
+    with contextlib.suppress(ProcessLookupError):
+        os.killpg(process.pid, signum)
+
+
+def end_group(process: subprocess.Popen) -> None:
+    """Ends the process group of process when a Ctrl-C reached the grader: SIGINT, as a Ctrl-C at
+    the terminal gives each process of the job (ctest alone would leave its running tests
+    behind, cmake --build its compilers), then SIGKILL to what is left after STOP_SECONDS or at a
+    second Ctrl-C."""
+    try:
+        signal_group(process, signal.SIGINT)
+        process.wait(STOP_SECONDS)
+    except (subprocess.TimeoutExpired, KeyboardInterrupt):
+        pass
+    finally:
+        signal_group(process, signal.SIGKILL)
+        process.wait()
+
+
+def child(command: list[str], **options) -> subprocess.CompletedProcess:
+    """subprocess.run(command, **options) with the command in a process group of its own, which
+    the grader ends whole when it is interrupted (end_group) and passes FORWARDED on to."""
+    with subprocess.Popen(command, stdin=subprocess.DEVNULL, start_new_session=True,
+                          **options) as process:
+        def forward(signum: int, _frame: object) -> None:
+            signal_group(process, signum)
+            signal.signal(signum, signal.SIG_DFL)
+            os.kill(os.getpid(), signum)  # the grader ends by it, as it did before
+
+        # A signal the caller ignores (nohup) stays ignored, as the command inherited it.
+        kept = {s: signal.signal(s, forward) for s in FORWARDED
+                if signal.getsignal(s) == signal.SIG_DFL}
+        try:
+            out, err = process.communicate()
+        except BaseException:  # KeyboardInterrupt: a Ctrl-C, which reached the grader alone
+            end_group(process)
+            raise
+        finally:
+            for signum, handler in kept.items():
+                signal.signal(signum, handler)
+    return subprocess.CompletedProcess(command, process.returncode, out, err)
+
+
 def run(command: list[str], log: Path) -> int:
     """Runs command with its output into log; returns its exit code."""
     with log.open("w", encoding="utf-8") as out:
         out.write("$ " + " ".join(command) + "\n")
         out.flush()
-        return subprocess.run(command, stdout=out, stderr=subprocess.STDOUT,
-                              stdin=subprocess.DEVNULL, check=False).returncode
+        return child(command, stdout=out, stderr=subprocess.STDOUT).returncode
 
 
 def count_tests(build: Path, label: str) -> int:
-    listing = subprocess.run(["ctest", "--test-dir", str(build), "-N", "-L", f"^{label}$"],
-                             capture_output=True, text=True, check=False).stdout
+    listing = child(["ctest", "--test-dir", str(build), "-N", "-L", f"^{label}$"],
+                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True).stdout
     match = re.search(r"^Total Tests: *([0-9]+)", listing, re.MULTILINE)
     return int(match.group(1)) if match else 0
 
@@ -358,40 +422,6 @@ def gradescope(stages: list[Stage], absent: list[str], report: str, seconds: flo
     }
 
 
-def write_json(path: Path, data: dict) -> None:
-    """Writes through a temporary file and a rename: never a half-written results.json, and no
-    temporary file left when the write fails or is interrupted."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(path.name + ".tmp")
-    try:
-        temporary.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-        temporary.replace(path)
-    except BaseException:
-        try:
-            if not temporary.is_dir():  # a directory of that name was there before: not ours
-                temporary.unlink(missing_ok=True)
-        except OSError:
-            pass
-        raise
-
-
-def output_problem(path: Path, directory: bool) -> str | None:
-    """Why the grader could not write the file (directory: the folder) path, its missing folders
-    made on the way, or None. Checked before any build: a bad path is bad usage."""
-    if path.is_dir() and not directory:
-        return "it is a directory"
-    if path.exists() and not path.is_dir() and directory:
-        return "it is not a directory"
-    folder = path if directory else path.parent
-    while not folder.exists() and folder != folder.parent:
-        folder = folder.parent  # the folder that the missing ones would be made in
-    if not folder.is_dir():
-        return f"'{folder}' is not a directory"
-    if not os.access(folder, os.W_OK | os.X_OK):
-        return f"the directory '{folder}' is not writable"
-    return None
-
-
 # ---- Command line ----------------------------------------------------------------------------
 
 def positive_int(text: str) -> int:
@@ -428,7 +458,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                "Exit codes: 0 every required stage passed; 1 a required stage failed; 2 bad "
                "usage, bad weights file, a stage folder without weight or an output path that "
                "cannot be written (checked first); 3 the grader could not work (cmake missing, "
-               "an output it could not write all the same). No results.json with 2 or 3.")
+               "an output it could not write all the same); 130 interrupted (Ctrl-C), the "
+               "command running then ended with it; 141 the reader of the output went away "
+               "(| head). No results.json with 2, 3 or 130.")
     parser.add_argument("-S", "--source-dir", type=Path, default=REPO, metavar="DIR",
                         help="the checkout to grade (default: the one holding this grader)")
     parser.add_argument("-B", "--build-dir", type=Path, metavar="DIR",
@@ -480,6 +512,7 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 
 def main(argv: list[str]) -> int:
+    args = None
     try:
         args = parse_args(argv)
         weights = read_weights(args.weights)
@@ -517,7 +550,9 @@ def main(argv: list[str]) -> int:
         print()
         print(report)
         try:
-            write_json(args.results, gradescope(stages, absent, report, time.monotonic() - start))
+            write_whole(args.results,
+                        json.dumps(gradescope(stages, absent, report, time.monotonic() - start),
+                                   indent=2) + "\n")
         except OSError as e:
             raise CannotRun(f"cannot write {args.results}: {e.strerror}") from None
 
@@ -538,7 +573,12 @@ def main(argv: list[str]) -> int:
     except CannotRun as e:
         print(f"grade: error: {e}", file=sys.stderr)
         return EXIT_CANNOT_RUN
+    except KeyboardInterrupt:  # the command running then is ended already (child)
+        writes = args is not None and not args.list
+        where = f"; nothing written to {args.results}" if writes else ""
+        print(f"grade: interrupted{where}", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_command_line(main, sys.argv[1:]))

@@ -29,7 +29,9 @@ and lines that keep the compiler quiet about what the stubs leave unused (parame
 Exit codes: 0 written; 1 the handout could not be written (git failed, a file could not be
 copied); 2 bad usage: an unknown stage, a stage without solution regions, a malformed marker, an
 output directory that is not empty or lies inside the repository, a source that is no checkout;
-130 interrupted (Ctrl-C): nothing is written, the output directory is as it was.
+130 interrupted (Ctrl-C): nothing is written, the output directory is as it was; 141 the reader of
+its output went away (a pipe closed early, `make-handout --list | head -1`): it stops there,
+quietly, as a program that SIGPIPE ends (a handout written before that stays whole).
 """
 from __future__ import annotations
 
@@ -44,7 +46,11 @@ import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
-EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
+# The Python tools' shared module, beside this file (found however this file is run).
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from tooling import EXIT_INTERRUPTED, run_command_line  # noqa: E402
+
+EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 
 REPO = Path(__file__).resolve().parent.parent  # the checkout holding this script
 STAGE_FOLDER = re.compile(r"^(stage|mini)([0-9]+)_\w+$")  # stage03_intersections
@@ -541,4 +547,4 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_command_line(main, sys.argv[1:]))

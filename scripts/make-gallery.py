@@ -18,7 +18,10 @@ Whatever is missing (a README, a linked image, the galaxy pair, the timing) is l
 page, said so on it, and listed on stderr as "make-gallery: missing: ...". The exit code is 0
 then too; 2 for bad usage (a --bench FILE that is not there, an output the page cannot be written
 to, checked before any work) or a timing file that does not follow the schema below; 1 when
-writing the page fails all the same. The page is written whole or not at all.
+writing the page fails all the same; 130 when interrupted (Ctrl-C): one line on stderr says so,
+the page is not written (an earlier one is left as it was); 141 when the reader of its output
+went away (a pipe closed early, `scripts/make-gallery.py | head -1`): it stops there, quietly,
+as a program that SIGPIPE ends. The page is written whole or not at all.
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
@@ -49,6 +52,10 @@ import struct
 import sys
 from decimal import ROUND_HALF_UP, Decimal
 from pathlib import Path
+
+# The Python tools' shared module, grading/tooling.py.
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "grading"))
+from tooling import EXIT_INTERRUPTED, output_problem, run_command_line, write_whole  # noqa: E402
 
 PROGRAM = "make-gallery"
 STYLESHEET = Path(__file__).resolve().parent.parent / "docs" / "gallery.css"
@@ -439,37 +446,6 @@ def page(root: Path, bench_path: Path, page_dir: Path) -> str:
             "\n".join(body) + "\n</body>\n</html>\n")
 
 
-def output_problem(output: Path) -> str | None:
-    """Why the page cannot be written to output (its missing folders are made), or None."""
-    if output.is_dir():
-        return "it is a directory"
-    folder = output.parent
-    while not folder.exists() and folder != folder.parent:
-        folder = folder.parent  # the folder that the missing ones would be made in
-    if not folder.is_dir():
-        return f"'{folder}' is not a directory"
-    if not os.access(folder, os.W_OK | os.X_OK):
-        return f"the directory '{folder}' is not writable"
-    return None
-
-
-def write_page(output: Path, text: str) -> None:
-    """Through a temporary file and a rename: written whole or not at all, and the temporary
-    file removed whatever stops it (an error, a Ctrl-C)."""
-    output.parent.mkdir(parents=True, exist_ok=True)
-    temporary = output.with_name(output.name + ".tmp")
-    try:
-        temporary.write_text(text, encoding="utf-8")
-        temporary.replace(output)
-    except BaseException:
-        try:
-            if not temporary.is_dir():  # a directory of that name was there before: not ours
-                temporary.unlink(missing_ok=True)
-        except OSError:
-            pass
-        raise
-
-
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(prog="scripts/make-gallery.py",
                                      description="Writes the gallery page, docs/index.html.")
@@ -499,18 +475,22 @@ def main(argv: list[str]) -> int:
         print(f"{PROGRAM}: {cannot_write}: {problem}", file=sys.stderr)
         return 2
     try:
-        text = page(root, bench, output.parent)
-    except BadInput as e:
-        print(f"{PROGRAM}: {e}", file=sys.stderr)
-        return 2
-    try:
-        write_page(output, text)
-    except OSError as e:
-        print(f"{PROGRAM}: {cannot_write}: {e.strerror or e}", file=sys.stderr)
-        return 1
+        try:
+            text = page(root, bench, output.parent)
+        except BadInput as e:
+            print(f"{PROGRAM}: {e}", file=sys.stderr)
+            return 2
+        try:
+            write_whole(output, text)
+        except OSError as e:
+            print(f"{PROGRAM}: {cannot_write}: {e.strerror or e}", file=sys.stderr)
+            return 1
+    except KeyboardInterrupt:  # while the page is made or written: write_whole leaves no .tmp
+        print(f"{PROGRAM}: interrupted; nothing written to {output}", file=sys.stderr)
+        return EXIT_INTERRUPTED
     print(f"{PROGRAM}: wrote {output}")
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_command_line(main, sys.argv[1:]))

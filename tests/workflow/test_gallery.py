@@ -3,7 +3,8 @@
 
   python3 tests/workflow/test_gallery.py            the page of a fixture repository: its stage
                                                     map, what is missing, the timing charts' labels
-                                                    and the table (tests/workflow/bench-fixture.json)
+                                                    and the table (timing: bench-fixture.json here);
+                                                    a Ctrl-C, an output pipe closed early
   python3 tests/workflow/test_gallery.py --browser  the page of this repository (and the committed
                                                     docs/index.html) opened in headless Chromium at
                                                     a phone's width and a desktop's: every <img>
@@ -21,6 +22,7 @@ from __future__ import annotations
 import html
 import importlib.util
 import json
+import os
 import re
 import shutil
 import struct
@@ -51,9 +53,30 @@ def png(width: int, height: int) -> bytes:
             chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
 
 
-def make_gallery(*args: object) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args)], capture_output=True,
-                          text=True, check=False)
+def gallery_command(*args: object, via: tuple[str, ...] = ()) -> list[str]:
+    """scripts/make-gallery.py with args, run by this interpreter (through the code of `-c CODE`
+    as via)."""
+    return [sys.executable, *via, str(SCRIPT), *map(str, args)]
+
+
+def make_gallery(*args: object, via: tuple[str, ...] = ()) -> subprocess.CompletedProcess:
+    return subprocess.run(gallery_command(*args, via=via), capture_output=True, text=True,
+                          check=False)
+
+
+# scripts/make-gallery.py sending itself SIGINT (a Ctrl-C) as it renames the page's temporary
+# file to the page, the last step of writing it: argv[1] is the script, the rest its arguments.
+INTERRUPTED = """\
+import os, pathlib, runpy, signal, sys
+replace = pathlib.Path.replace
+def interrupting_replace(self, target):
+    if self.name.endswith(".tmp"):
+        os.kill(os.getpid(), signal.SIGINT)
+    return replace(self, target)
+pathlib.Path.replace = interrupting_replace
+sys.argv = sys.argv[1:]
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
 
 
 class Page(HTMLParser):
@@ -106,6 +129,12 @@ class Page(HTMLParser):
 class GalleryTest(unittest.TestCase):
     """The page of a fixture repository."""
 
+    # What the fixture lacks, on stderr while the page is made.
+    MISSING = ("make-gallery: missing: docs/images/absent.png (linked by stage02_beta/README.md)\n"
+               "make-gallery: missing: mini1_gamma/README.md\n"
+               "make-gallery: missing: docs/images/galaxy-clear.png (the galaxy without diffused "
+               "glass)\n")
+
     @classmethod
     def setUpClass(cls) -> None:
         cls.tmp = Path(tempfile.mkdtemp(prefix="gallery-test-"))
@@ -145,12 +174,7 @@ class GalleryTest(unittest.TestCase):
         # EP01: the page is written; what is missing is listed on stderr, in the page's order
         self.assertEqual(self.run_.returncode, 0, self.run_.stderr)
         self.assertEqual(self.run_.stdout, f"make-gallery: wrote {self.output}\n")
-        self.assertEqual(self.run_.stderr,
-                         "make-gallery: missing: docs/images/absent.png (linked by "
-                         "stage02_beta/README.md)\n"
-                         "make-gallery: missing: mini1_gamma/README.md\n"
-                         "make-gallery: missing: docs/images/galaxy-clear.png (the galaxy "
-                         "without diffused glass)\n")
+        self.assertEqual(self.run_.stderr, self.MISSING)
 
     def test_stage_map(self) -> None:
         # EP01: every stage folder, stages then mini projects, each by number; other folders not
@@ -329,6 +353,32 @@ class GalleryTest(unittest.TestCase):
         self.assertTrue(r.stderr.endswith(f"make-gallery: -o: cannot write '{output}': Is a "
                                           "directory\n"), r.stderr)
         self.assertEqual([p.name for p in output.parent.iterdir()], ["index.html.tmp"])
+
+    def test_a_ctrl_c_while_writing_leaves_no_page_and_no_temporary_file(self) -> None:
+        # EP01: interrupted as the page is renamed into place: exit 130, one line after what is
+        # missing, no traceback, nothing in the output's folder
+        output = self.tmp / "interrupted" / "index.html"
+        r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output,
+                         via=("-c", INTERRUPTED))
+        self.assertEqual((r.returncode, r.stdout), (130, ""))
+        self.assertEqual(r.stderr, self.MISSING +
+                         f"make-gallery: interrupted; nothing written to {output}\n")
+        self.assertEqual(list(output.parent.iterdir()), [])
+
+    def test_an_output_pipe_closed_early_leaves_the_page_whole(self) -> None:
+        # EP01: as `scripts/make-gallery.py | head -1` when head has gone before the line saying
+        # what was written: that line fails quietly, exit 141, the page is written all the same
+        output = self.tmp / "piped" / "index.html"
+        read, write = os.pipe()
+        os.close(read)
+        try:
+            r = subprocess.run(gallery_command("--root", self.root, "--bench", BENCH, "-o",
+                                               output),
+                               stdout=write, stderr=subprocess.PIPE, text=True, check=False)
+        finally:
+            os.close(write)
+        self.assertEqual((r.returncode, r.stderr), (141, self.MISSING))
+        self.assertEqual(output.read_text(encoding="utf-8"), self.text)
 
 
 # ---- The browser -------------------------------------------------------------------------------

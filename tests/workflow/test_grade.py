@@ -1,15 +1,19 @@
 #!/usr/bin/env python3
 """scripts/grade grading the fixture project of tests/workflow/fixture: its table, results.json,
 JUnit files and exit codes, for a whole checkout, a course-mode cut, one stage, a label that
-selects nothing, and bad usage. It builds nothing of the ray tracer: the fixture's tests are
-shell commands. Run by ctest as workflow.grade, or alone: python3 tests/workflow/test_grade.py
+selects nothing, and bad usage; and, with a stage added whose test waits, a Ctrl-C, a SIGTERM and a
+closed output pipe while that test runs. It builds nothing of the ray tracer: the fixture's tests
+are shell commands. Run by ctest as workflow.grade, or alone: python3 tests/workflow/test_grade.py
 """
 from __future__ import annotations
 
 import json
+import os
 import shutil
+import signal
 import subprocess
 import tempfile
+import time
 import unittest
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -44,10 +48,13 @@ def write(path: Path, text: str) -> Path:
     return path
 
 
-def grade(*args: object, cwd: Path | None = None) -> subprocess.CompletedProcess:
+def grade_command(*args: object) -> list[str]:
     """scripts/grade without package installs, one job at a time."""
-    return subprocess.run(["bash", str(REPO / "scripts" / "grade"), "--no-deps", "--jobs", "1",
-                           *map(str, args)], capture_output=True, text=True, cwd=cwd,
+    return ["bash", str(REPO / "scripts" / "grade"), "--no-deps", "--jobs", "1", *map(str, args)]
+
+
+def grade(*args: object, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    return subprocess.run(grade_command(*args), capture_output=True, text=True, cwd=cwd,
                           check=False)
 
 
@@ -213,6 +220,18 @@ class GradeTest(unittest.TestCase):
         self.assert_usage_error(f"{weights}:2: POINTS of stage02: expected a number >= 0, "
                                 "got 'ten'", weights=weights)
 
+    def test_a_source_dir_without_stage_folders_is_a_usage_error_naming_it(self):
+        # A folder named like a stage but without a CMakeLists.txt is none.
+        source = self.tmp / "no-stages"
+        (source / "stage01_draft").mkdir(parents=True)
+        run = grade("-S", source, "-B", self.tmp / "build-no-stages", "--weights", self.weights)
+        self.assert_exit(run, 2)
+        self.assertEqual(run.stderr, f"grade: error: --source-dir: '{source.resolve()}' has no "
+                                     "stage folder: expected at its top a folder stageNN_name or "
+                                     "miniN_name (such as stage01_primitives) with a "
+                                     "CMakeLists.txt\n")
+        self.assertFalse((self.tmp / "build-no-stages").exists())
+
     def test_a_bad_option_value_is_a_usage_error(self):
         self.assert_usage_error("--jobs: expected a positive integer, got '0'", "--jobs", "0")
 
@@ -270,6 +289,133 @@ class GradeTest(unittest.TestCase):
         self.assertTrue(folders)
         for folder in folders:
             self.assertIn(f"  {folder}  ", run.stdout)
+
+
+# stage04_slow, added to a copy of the fixture: its one test writes its process id to
+# $GATE/started, then waits until $GATE/open exists or $GATE is gone (GATE: a folder each test
+# gives grade in its environment, which ctest passes on).
+SLOW_STAGE = """\
+add_custom_target(stage04_tests)
+add_test(NAME Slow.waits COMMAND sh -c [[
+echo $$ > "$GATE/started.tmp" && mv "$GATE/started.tmp" "$GATE/started"
+while [ -d "$GATE" ] && [ ! -e "$GATE/open" ]; do sleep 0.05; done
+]])
+set_tests_properties(Slow.waits PROPERTIES LABELS stage04)
+"""
+
+
+def running(pid: int) -> bool:
+    """Whether the process pid runs: it exists and is no zombie (one that has ended, its parent
+    gone, and is not yet reaped by the process that inherited it)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    try:
+        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
+    except OSError:
+        return True  # no /proc: only its disappearance counts
+
+
+class StopTest(unittest.TestCase):
+    """scripts/grade stopped while the test of stage04_slow runs: by a Ctrl-C (SIGINT to the
+    grader alone, as `kill -INT` sends it: the test's process is no child of the grader's, but of
+    ctest's), by SIGTERM, by its output pipe closing."""
+
+    @classmethod
+    def setUpClass(cls) -> None:
+        cls.tmp = Path(tempfile.mkdtemp(prefix="grade-stop-test-"))
+        cls.source = cls.tmp / "source"
+        shutil.copytree(FIXTURE, cls.source)
+        (cls.source / "stage04_slow").mkdir()
+        write(cls.source / "stage04_slow" / "CMakeLists.txt", SLOW_STAGE)
+        with (cls.source / "CMakeLists.txt").open("a", encoding="utf-8") as f:
+            f.write("add_subdirectory(stage04_slow)\n")
+        cls.weights = write(cls.tmp / "weights.txt", WEIGHTS + "stage04   1  yes\n")
+
+    @classmethod
+    def tearDownClass(cls) -> None:
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def start(self, name: str) -> tuple[subprocess.Popen, Path]:
+        """scripts/grade --stage stage04 with its gate and build tree in tmp/name, and the gate;
+        at the end of the test, whatever happened, neither the grader nor the test runs on."""
+        gate = self.tmp / name
+        gate.mkdir()
+        grader = subprocess.Popen(
+            grade_command("-S", self.source, "-B", gate / "build", "--weights", self.weights,
+                          "--stage", "stage04"),
+            env=dict(os.environ, GATE=str(gate)), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+            text=True)
+
+        def stop() -> None:
+            if grader.poll() is None:
+                grader.kill()
+            grader.communicate()
+            # The test, should it have outlived the grader (the fault these tests look for).
+            started = gate / "started"
+            if started.exists() and running(pid := int(started.read_text(encoding="utf-8"))):
+                os.kill(pid, signal.SIGKILL)
+        self.addCleanup(stop)
+        return grader, gate
+
+    def slow_test_pid(self, grader: subprocess.Popen, gate: Path) -> int:
+        """The process id of stage04's test, once the grader has said that it runs it and the
+        test has started."""
+        said = []
+        for line in grader.stdout:
+            said.append(line)
+            if line.startswith("grade: stage04: running 1 tests"):
+                break
+        else:
+            self.fail(f"grade ended before running the test:\n{''.join(said)}")
+        started = gate / "started"
+        deadline = time.monotonic() + 60
+        while not started.exists():
+            if grader.poll() is not None or time.monotonic() > deadline:
+                self.fail(f"the test did not start (grade's exit code: {grader.poll()})")
+            time.sleep(0.01)
+        return int(started.read_text(encoding="utf-8"))
+
+    def assert_ended(self, pid: int) -> None:
+        """pid ends within 10 s (once ended, it may wait a moment to be reaped)."""
+        deadline = time.monotonic() + 10
+        while running(pid):
+            if time.monotonic() > deadline:
+                self.fail(f"the test's process {pid} still runs 10 s after the grader ended")
+            time.sleep(0.01)
+
+    def test_a_ctrl_c_ends_the_running_test_and_writes_no_results(self):
+        grader, gate = self.start("interrupted")
+        test = self.slow_test_pid(grader, gate)
+        grader.send_signal(signal.SIGINT)
+        _, stderr = grader.communicate(timeout=60)
+        out = gate / "build" / "grading"
+        self.assertEqual((grader.returncode, stderr),
+                         (130, f"grade: interrupted; nothing written to {out / 'results.json'}\n"))
+        self.assert_ended(test)
+        # No results.json, no results.json.tmp, no JUnit file: the logs alone.
+        self.assertEqual([p.name for p in out.iterdir()], ["logs"])
+
+    def test_a_sigterm_is_passed_on_to_the_running_test(self):
+        # As when they shared the grader's process group: the grader ends by the signal too.
+        grader, gate = self.start("terminated")
+        test = self.slow_test_pid(grader, gate)
+        grader.terminate()
+        _, stderr = grader.communicate(timeout=60)
+        self.assertEqual((grader.returncode, stderr), (-signal.SIGTERM, ""))
+        self.assert_ended(test)
+        self.assertFalse((gate / "build" / "grading" / "results.json").exists())
+
+    def test_an_output_pipe_closed_early_stops_the_grader_quietly(self):
+        # As `scripts/grade | head -4`: the reader goes away while the test runs; the grader's
+        # next line finds the pipe closed.
+        grader, gate = self.start("piped")
+        self.slow_test_pid(grader, gate)
+        grader.stdout.close()
+        (gate / "open").touch()
+        _, stderr = grader.communicate(timeout=60)
+        self.assertEqual((grader.returncode, stderr), (141, ""))
 
 
 class CheckCtestLinesTest(unittest.TestCase):

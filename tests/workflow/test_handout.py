@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """scripts/make-handout on the fixture of tests/workflow/handout-fixture: the exact text that
 replaces each kind of solution region, the stages below without their markers, the stages above
-left out, the README's table and NEEDS blocks, tracked files only, and the refusals (exit 2). It
-compiles nothing: scripts/check-handouts.sh builds the real handouts. Run by ctest as
-workflow.handout, or alone: python3 tests/workflow/test_handout.py
+left out, the README's table and NEEDS blocks, tracked files only, the refusals (exit 2), a Ctrl-C
+(exit 130) and an output pipe closed early (exit 141). It compiles nothing:
+scripts/check-handouts.sh builds the real handouts. Run by ctest as workflow.handout, or alone:
+python3 tests/workflow/test_handout.py
 """
 from __future__ import annotations
 
@@ -107,9 +108,13 @@ double root(double x) {
 """
 
 
+def make_handout_command(*args: object) -> list[str]:
+    return ["bash", str(REPO / "scripts" / "make-handout"), "--no-deps", *map(str, args)]
+
+
 def make_handout(*args: object) -> subprocess.CompletedProcess:
-    return subprocess.run(["bash", str(REPO / "scripts" / "make-handout"), "--no-deps",
-                           *map(str, args)], capture_output=True, text=True, check=False)
+    return subprocess.run(make_handout_command(*args), capture_output=True, text=True,
+                          check=False)
 
 
 # grading/handout.py as make-handout runs it, sending itself SIGINT (a Ctrl-C) while it copies
@@ -307,6 +312,46 @@ stage02_two (stage02): 5 region(s)
         self.assertEqual(list(out.iterdir()), [])
         self.assertEqual(sorted(p.name for p in self.tmp.iterdir()
                                 if p.name.startswith(".interrupted-empty.")), [])
+
+    # ---- The reader of the output gone: exit 141, quietly ----
+
+    def test_a_pipe_closed_after_the_first_line_of_a_long_list_stops_it_quietly(self):
+        # As `make-handout --list | head -1`: the listing is longer than a pipe holds (64 KiB)
+        # and what this test reads at once (8 KiB), so make-handout still writes when the
+        # pipe closes.
+        source = self.tmp / "many-regions"
+        shutil.copytree(FIXTURE, source)
+        regions = 3000  # a listing of about 280 kB
+        (source / "stage02_two" / "src" / "Many.cpp").write_text("".join(
+            f"  // BEGIN SOLUTION: hint: many, region {i} of a list longer than a pipe holds\n"
+            "  // END SOLUTION\n" for i in range(regions)), encoding="utf-8")
+        git(source, "init", "-q")
+        git(source, "add", "-A")
+        lister = subprocess.Popen(make_handout_command("--source-dir", source, "--list",
+                                                       "--stage", "stage02"),
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        first = lister.stdout.readline()
+        lister.stdout.close()
+        _, stderr = lister.communicate(timeout=60)
+        self.assertEqual(first, f"stage02_two (stage02): {regions + 5} region(s)\n")
+        self.assertEqual((lister.returncode, stderr), (141, ""))
+
+    def test_a_pipe_closed_before_the_report_leaves_the_handout_whole(self):
+        # As `make-handout ... | head -1` when head has gone before make-handout says what it
+        # wrote: that report fails, the handout is written all the same.
+        out = self.tmp / "piped"
+        read, write = os.pipe()
+        os.close(read)
+        try:
+            run = subprocess.run(make_handout_command("--source-dir", self.source, "--stage",
+                                                      "stage02", "--out", out),
+                                 stdout=write, stderr=subprocess.PIPE, text=True, check=False)
+        finally:
+            os.close(write)
+        self.assertEqual((run.returncode, run.stderr), (141, ""))
+        self.assertEqual(self.read("stage02_two/src/Two.cpp", out), TWO_CPP)
+        self.assertEqual(sorted(p.name for p in self.tmp.iterdir() if p.name.startswith(".piped.")),
+                         [])
 
     # ---- Refusals: exit 2, a message, nothing written ----
 
