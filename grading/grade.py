@@ -511,12 +511,22 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     return args
 
 
+def checked_arguments(argv: list[str]) -> tuple[argparse.Namespace, list[Weight], list[Stage],
+                                                list[str]]:
+    """The arguments parsed and checked as far as they can be before any work (the options, the
+    output paths, the weights file, the stages): args, the weights, the stages to grade and the
+    labels not in the checkout. scripts/grade calls it before it installs anything.
+    @raises UsageError; SystemExit for --help (0) and what argparse refuses (2)."""
+    args = parse_args(argv)
+    weights = read_weights(args.weights)
+    stages, absent = plan(weights, stage_folders(args.source_dir), args.stage, args.weights)
+    return args, weights, stages, absent
+
+
 def main(argv: list[str]) -> int:
     args = None
     try:
-        args = parse_args(argv)
-        weights = read_weights(args.weights)
-        stages, absent = plan(weights, stage_folders(args.source_dir), args.stage, args.weights)
+        args, weights, stages, absent = checked_arguments(argv)
         if args.list:
             print(columns([("stage", "folder", "points", "required")] +
                           [(s.label, s.folder, f"{s.points:g}", "yes" if s.required else "no")
