@@ -73,9 +73,17 @@ TEST(BuiltinScenesTests, everyStageTableIsRegisteredOnce) {
       ASSERT_NE(s, nullptr) << entry.name;
       EXPECT_EQ(s->description, entry.description);
       EXPECT_EQ(s->tracer, tracer) << entry.name;
-      EXPECT_EQ(makeBuiltinScene(*s, {}).render.tracer, tracer) << entry.name;
+      const SceneDocument doc = makeBuiltinScene(*s, {});
+      EXPECT_EQ(doc.render.tracer, tracer) << entry.name;
+      // The course's grid over the picture, where the table gives one (color-render: white,
+      // every 100 pixels); the format's default colour, yellow, where it gives none.
+      EXPECT_EQ(doc.render.gridLines, entry.gridInterval) << entry.name;
+      EXPECT_EQ(doc.render.gridColor, entry.gridInterval > 0 ? entry.gridColor : Color(255, 255, 0))
+          << entry.name;
     }
   };
+  ASSERT_EQ(lightingScenes()[0].name, std::string_view("color-render"));
+  ASSERT_EQ(lightingScenes()[0].gridInterval, 100);  // the one table entry with a grid
   expectEntries(lightingScenes(), "phong");
   expectEntries(shadowScenes(), "shadow");
   expectEntries(reflectionScenes(), "whitted");

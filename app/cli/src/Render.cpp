@@ -125,10 +125,10 @@ std::string renderCommandDetails() {
          "\nBefore any ray is cast, everything is checked: the scene, the options, the\n"
          "resolution and that the output's directory can be written to. Progress goes to\n"
          "stderr (a percentage on a terminal, a line per 10% otherwise, with the rays per\n"
-         "second and the time left), then the wall time, the threads and the rates of\n"
-         "primary rays and of all rays. The image is written to a temporary file and\n"
-         "renamed: Ctrl-C stops the render within a row, writes nothing, leaves an\n"
-         "existing FILE.png as it was, and exits with code 130.\n";
+         "second and, while the rate is steady, the time left), then the wall time, the\n"
+         "threads and the rates of primary rays and of all rays. The image is written to\n"
+         "a temporary file and renamed: Ctrl-C stops the render within a row, writes\n"
+         "nothing, leaves an existing FILE.png as it was, and exits with code 130.\n";
 }
 
 void addRenderOptions(CLI::App& command, RenderArgs& into) {

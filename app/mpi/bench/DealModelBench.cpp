@@ -213,7 +213,7 @@ int run(int argc, char** argv) {
   const TileGrid fine(nX, nY, 8);
   std::vector<double> cost(fine.size());
   std::printf("%s at %d x %d (tracer %s): every 8 x 8 tile rendered alone on one thread...\n",
-              o.scene.c_str(), nX, nY, request.doc.render.tracer.c_str());
+              o.scene.c_str(), nX, nY, request.tracer->name.c_str());
   std::fflush(stdout);
   const auto wall0 = std::chrono::steady_clock::now();
   for (std::uint64_t i = 0; i < fine.size(); ++i) {

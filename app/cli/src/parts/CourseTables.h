@@ -22,11 +22,17 @@ inline void addCourseScenes(CliRegistry& registry, std::span<const CourseScene> 
                                std::string(stage),
                                std::string(tracer),
                                {},
-                               [make, t = std::string(tracer)](const SceneParams&) {
+                               [make, t = std::string(tracer), every = entry.gridInterval,
+                                colour = entry.gridColor](const SceneParams&) {
                                  SceneSetup<LitScene> setup = make();
                                  SceneDocument doc =
                                      litDocument(std::move(setup.scene), setup.camera);
                                  doc.render.tracer = t;
+                                 // The course's grid over its picture, where its table gives one.
+                                 if (every > 0) {
+                                   doc.render.gridLines = every;
+                                   doc.render.gridColor = colour;
+                                 }
                                  return doc;
                                }});
   }
