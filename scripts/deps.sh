@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project builds with, when they are missing.
 #
-#   scripts/deps.sh [--dry-run] [--embree] [--mpi] [--video] [--pretend-missing PKG]...
-#                   [EXTRA_PKG]...
+#   scripts/deps.sh [--dry-run] [--only] [--embree] [--mpi] [--video]
+#                   [--pretend-missing PKG]... [EXTRA_PKG]...
 #
 # Silent, and touches nothing, when every package is already installed (a dry run then says
 # "nothing missing" and lists the packages it checked). Otherwise it runs
@@ -14,6 +14,10 @@
 # "Embree 3" (reconfigure after installing). --mpi adds OpenMPI (openmpi-bin, libopenmpi-dev):
 # with it, rt-mpi is built and its tests (label mpi) run. --video adds ffmpeg, which
 # `rt animate --video` encodes with. The README's test command and CI ask for both.
+# --only (anywhere among the arguments) leaves the build's own packages out: only the packages
+# named (EXTRA_PKG, --embree, --mpi, --video; at least one, else exit 2) are checked and
+# installed. `scripts/deps.sh --only python3` installs python3 alone, as scripts/grade does when
+# it builds nothing (--list, --no-build).
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # rt_usage
@@ -22,17 +26,20 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"  # rt_usage
 # output), nlohmann-json (scene files), CLI11 (rt's command line) and Assimp (model files; the
 # build works without it, and then cannot read them). The CMake files name the same packages
 # when one is missing.
-packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev
-          libassimp-dev)
+build_packages=(cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev
+                libcli11-dev libassimp-dev)
 
 dry_run=0
+only=0
+named=()  # the packages asked for beyond the build's, in the order given
 pretend=()
 while (($#)); do
   case "$1" in
     --dry-run) dry_run=1 ;;
-    --embree) packages+=(libembree-dev) ;;
-    --mpi) packages+=(openmpi-bin libopenmpi-dev) ;;
-    --video) packages+=(ffmpeg) ;;
+    --only) only=1 ;;
+    --embree) named+=(libembree-dev) ;;
+    --mpi) named+=(openmpi-bin libopenmpi-dev) ;;
+    --video) named+=(ffmpeg) ;;
     --pretend-missing)
       (($# >= 2)) || { echo "deps.sh: --pretend-missing needs a package name" >&2; exit 2; }
       # A package name, not the next option: `--pretend-missing --dry-run` must not lose the dry
@@ -50,10 +57,19 @@ while (($#)); do
       ;;
     -*) echo "deps.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     '') echo "deps.sh: an empty package name (see --help)" >&2; exit 2 ;;
-    *) packages+=("$1") ;;
+    *) named+=("$1") ;;
   esac
   shift
 done
+if ((only)); then
+  ((${#named[@]})) || {
+    echo "deps.sh: --only needs a package to install (EXTRA_PKG, --embree, --mpi or --video)" >&2
+    exit 2
+  }
+  packages=("${named[@]}")
+else
+  packages=("${build_packages[@]}" "${named[@]+"${named[@]}"}")
+fi
 
 installed() {
   local p

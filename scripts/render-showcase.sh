@@ -10,8 +10,11 @@
 # its full resolution on every core (or the first scene `rt list` prints when there is no galaxy:
 # a course cut before mini1_glossy). SCENE is a built-in name or a .json file; the options go to
 # `rt render` (for example --width 640 --height 360, --threads 1, --accel none); -o FILE (or
-# --output FILE) writes FILE instead of images/NAME.png. Relative paths are the caller's. Set
-# RT_BUILD_DIR to build somewhere other than build/release.
+# -oFILE, --output FILE, --output=FILE) writes FILE instead of images/NAME.png; a FILE that
+# starts with '-' is refused in every spelling (an option where a file name was meant: `-o
+# --width 64`); write such a file as ./-x. --help (or -h) anywhere among the arguments prints
+# this and exits 0 before any other check. Relative paths are the caller's. Set RT_BUILD_DIR to
+# build somewhere other than build/release.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -21,6 +24,13 @@ SHOWCASE=galaxy
 
 # The arguments are checked before anything is installed or built. Paths the caller gives (a
 # scene file, -o FILE, RT_BUILD_DIR) are the caller's: made absolute before the cd below.
+# --help wherever it is, first (as in render-docs-images.sh): even after -o, where a file named
+# --help would be a slip.
+for arg in "$@"; do
+  case "$arg" in
+    -h | --help) rt_usage; exit 0 ;;
+  esac
+done
 scene=""
 if (($#)) && [[ "$1" != -* ]]; then
   scene="$1"
@@ -34,25 +44,26 @@ if (($#)) && [[ "$1" != -* ]]; then
 fi
 # The caller's -o/--output replaces images/NAME.png; the other options go to `rt render` as given.
 out=""
+given=""
 options=()
 while (($#)); do
   case "$1" in
-    -h | --help) rt_usage; exit 0 ;;
     -o | --output)
-      (($# >= 2)) || rt_bad_usage "$1 needs a file name"
-      [[ "$2" != -* ]] || rt_bad_usage "$1 needs a file name, got '$2'"
+      (($# >= 2)) || rt_bad_usage "$1 needs a file name: nothing follows it"
+      option="$1"
       file="$2"
-      shift
+      shift 2
       ;;
-    -o?*) file="${1#-o}" ;;
-    --output=*) file="${1#--output=}" ;;
+    -o?*) option=-o file="${1#-o}"; shift ;;
+    --output=*) option=--output file="${1#--output=}"; shift ;;
     *) options+=("$1"); shift; continue ;;
   esac
-  [[ -n "$file" ]] || rt_bad_usage "-o/--output needs a file name, got ''"
+  [[ -n "$file" ]] || rt_bad_usage "$option needs a file name, got ''"
+  [[ "$file" != -* ]] ||
+    rt_bad_usage "$option needs a file name, got '$file' (an option? a file so named: ./$file)"
   [[ -z "$out" ]] || rt_bad_usage "-o/--output given twice ('$given' and '$file')"
   given="$file"
   out="$(rt_abspath "$file")"
-  shift
 done
 build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
 

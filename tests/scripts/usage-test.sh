@@ -13,7 +13,9 @@
 # is installed). RT_BUILD_DIR and RT_HANDOUT_DIR name folders under a temporary directory that
 # must still be absent after each case. A few cases that do go on to the work show that the stubs
 # catch it (exit 1, or 3 for grade, with dpkg-query and apt-get or sudo in the log, and no
-# cmake: deps.sh stopped them).
+# cmake: deps.sh stopped them). grade's cases of its parser need python3; its cases without
+# python3 run on a PATH of the stubs and links to a few programs (bash, awk, grep, ...) that
+# holds no python3, and check which packages deps.sh asked dpkg-query about.
 #
 # Prints one line per case and exits 1 when any case fails.
 set -uo pipefail
@@ -136,26 +138,44 @@ reaches_deps "handouts: a folder with a trailing slash (a shell's completion)" 1
 # ---- scripts/render-showcase.sh: SCENE, its -o, the rest for `rt render` --------------------
 script="$scripts/render-showcase.sh"
 e='^render-showcase\.sh: error:'
-usage "showcase: --help" 0 '^  scripts/render-showcase\.sh \[SCENE\] \[RT_RENDER_OPTION\]\.\.\.$' \
-  --help
-usage "showcase: --help after a scene and rt options" 0 '^  scripts/render-showcase\.sh \[SCENE\]' \
-  galaxy --width 64 --help
+help='^  scripts/render-showcase\.sh \[SCENE\] \[RT_RENDER_OPTION\]\.\.\.$'
+usage "showcase: --help" 0 "$help" --help
+usage "showcase: --help after a scene and rt options" 0 "$help" galaxy --width 64 --help
 usage "showcase: an empty scene" 2 "$e an empty SCENE" ""
 usage "showcase: a missing scene file is named" 2 "$e no scene file 'nosuch\.json'$" nosuch.json
-usage "showcase: -o without a file" 2 "$e -o needs a file name$" galaxy -o
-usage "showcase: --output without a file" 2 "$e --output needs a file name$" galaxy --output
-usage "showcase: -o takes a file, not the next option" 2 \
-  "$e -o needs a file name, got '--width'$" -o --width 64
-usage "showcase: -o with an empty file" 2 "$e -o/--output needs a file name, got ''$" galaxy -o ""
-usage "showcase: --output= with an empty file" 2 "$e -o/--output needs a file name, got ''$" \
+# --help (or -h) wherever it is wins over every check, even where it would be -o's file.
+usage "showcase: --help after an empty scene" 0 "$help" "" --help
+usage "showcase: -h after a missing scene file" 0 "$help" nosuch.json -h
+usage "showcase: --help after an empty -o file" 0 "$help" galaxy -o "" --help
+usage "showcase: --help after -o" 0 "$help" -o --help
+usage "showcase: -h after --output=" 0 "$help" --output= -h
+# -o at the end, or with an empty file: refused, naming the option as given.
+usage "showcase: -o without a file" 2 "$e -o needs a file name: nothing follows it$" galaxy -o
+usage "showcase: --output without a file" 2 "$e --output needs a file name: nothing follows it$" \
+  galaxy --output
+usage "showcase: -o with an empty file" 2 "$e -o needs a file name, got ''$" galaxy -o ""
+usage "showcase: --output with an empty file" 2 "$e --output needs a file name, got ''$" \
+  --output ""
+usage "showcase: --output= with an empty file" 2 "$e --output needs a file name, got ''$" \
   --output=
+# A file name that starts with '-' is refused in every spelling (an option where the file was
+# meant), naming the option as typed and the way to write such a file; nothing is installed.
+hint() {
+  printf "%s" "$e $1 needs a file name, got '$2' \\(an option\\? a file so named: \\./$2\\)\$"
+}
+usage "showcase: -o -x refused" 2 "$(hint -o -x)" -o -x
+usage "showcase: --output -x refused" 2 "$(hint --output -x)" galaxy --output -x
+usage "showcase: -o-x refused" 2 "$(hint -o -x)" -o-x
+usage "showcase: --output=-x refused" 2 "$(hint --output -x)" --output=-x --width 64
+usage "showcase: -o takes no option's name as its file" 2 "$(hint -o --width)" -o --width 64
+: >"$work/scene.json"
+usage "showcase: a scene file, then -o -" 2 "$(hint -o -)" "$work/scene.json" -o -
 usage "showcase: -o given twice, both named" 2 \
   "$e -o/--output given twice \('a\.png' and 'b\.png'\)$" -o a.png --width 64 --output b.png
 usage "showcase: -oFILE and --output=FILE given together" 2 \
   "$e -o/--output given twice \('a\.png' and 'b\.png'\)$" -oa.png --output=b.png
-: >"$work/scene.json"
-usage "showcase: a scene file, then a bad -o" 2 "$e -o needs a file name, got '-'$" \
-  "$work/scene.json" -o -
+reaches_deps "showcase: -o ./-x goes on to deps.sh" 1 '^deps\.sh: installing missing' \
+  galaxy -o ./-x --width 64
 # An option the script does not know is `rt render`'s to judge, once rt is built: passed on.
 reaches_deps "showcase: an unknown option goes on to rt render (deps.sh first)" 1 \
   '^deps\.sh: installing missing' --bogus-option
@@ -185,11 +205,60 @@ if command -v python3 >/dev/null 2>&1; then
   reaches_deps "grade: good arguments go on to deps.sh" 3 \
     '^grade: error: scripts/deps\.sh could not install the packages$' \
     --stage stage01 --build-dir "$work/grade-build"
+  # With python3 there and nothing to build, deps.sh is not run at all.
+  usage "grade: --list with python3 installs nothing" 0 '^stage01 +stage01_primitives +[0-9]' \
+    --list
 else
-  # Without python3 the wrapper reads --help itself; its parser's cases need python3.
-  usage "grade: --help without python3" 0 '^  scripts/grade \[--stage STAGE\]\.\.\.' --help
   echo "note grade: the parser's cases need python3 on PATH: not run"
 fi
+
+# Without python3 (a PATH of the stubs and links to the programs the scripts and `check` call,
+# none of them python3): the wrapper reads --help, --list, --no-build and --no-deps itself, and
+# asks deps.sh for python3 alone when nothing is built, for the build's packages too when it is.
+bare="$work/bare"
+mkdir "$bare"
+for tool in "$stubs"/*; do
+  [[ "${tool##*/}" == python3 ]] || cp "$tool" "$bare/"
+done
+for tool in bash basename dirname nproc awk grep tail; do
+  found="$(command -v "$tool")" && [[ "$found" == /* ]] && ln -s "$found" "$bare/$tool"
+done
+# without_python NAME EXPECTED_EXIT PATTERN ASKED ARG...: `check` of scripts/grade on that PATH,
+# then that deps.sh asked dpkg-query about the packages ASKED, in that order, and nothing was
+# built (no cmake); with ASKED empty, that no stub ran at all (deps.sh did not run).
+without_python() {
+  local name="$1" want_code="$2" pattern="$3" want_asked="$4"
+  shift 4
+  rm -f "$log"
+  PATH="$bare" check "$name" "$want_code" "$pattern" "$@"
+  local asked
+  asked="$(awk '$1 == "dpkg-query" { print $NF }' "$log" 2>/dev/null | paste -sd ' ')"
+  if [[ "$asked" == "$want_asked" ]] && ! grep -q '^cmake ' "$log" 2>/dev/null &&
+      [[ -n "$want_asked" || ! -e "$log" ]]; then
+    pass "$name: deps.sh asked for ${want_asked:-nothing}"
+  else
+    fail "$name: deps.sh asked for ${want_asked:-nothing}" \
+      "it asked for ${asked:-nothing}; $(left)"
+  fi
+  rm -rf "$RT_BUILD_DIR" "$RT_HANDOUT_DIR"
+}
+if found="$(PATH="$bare" command -v python3)"; then
+  fail "grade without python3: the PATH made without python3 has one" "$found"
+fi
+built="cmake g++ make libgtest-dev libgmock-dev libstb-dev nlohmann-json3-dev libcli11-dev"
+built+=" libassimp-dev"
+without_python "grade without python3: --help" 0 '^  scripts/grade \[--stage STAGE\]\.\.\.' "" \
+  --help
+without_python "grade without python3: --list installs python3 alone" 3 \
+  '^deps\.sh: installing missing Debian packages: python3$' python3 --list
+without_python "grade without python3: --no-build installs python3 alone" 3 \
+  '^deps\.sh: installing missing Debian packages: python3$' python3 --stage stage01 --no-build
+without_python "grade without python3: a build installs its packages and python3" 3 \
+  "^deps\.sh: installing missing Debian packages: ${built//+/\\+} python3$" "$built python3" \
+  --stage stage01
+without_python "grade without python3: --list --no-deps installs nothing" 3 \
+  '^grade: error: python3 not found \(scripts/deps\.sh --only python3 installs it\)$' "" \
+  --list --no-deps
 
 echo "$((cases - dirty)) of $cases cases installed and built nothing"
 finish
