@@ -20,13 +20,15 @@ files, build and test logs and a Gradescope results.json, prints their paths, an
      is built or run;
   3  the grader could not work: cmake or ctest missing, an output it could not write all the same;
   130  interrupted (Ctrl-C): the configure, build or ctest running then is ended with its whole
-     process group (the tests, the compilers), one line on stderr says so; the logs and JUnit
-     files of the stages done stay;
+     process group (the tests, the compilers), one line on stderr says so, and whether
+     results.json was written; the logs and JUnit files of the stages done stay;
   141  the reader of its output went away (`scripts/grade | head -1`): it stops at its next line,
      quietly, as a program that SIGPIPE ends.
-With exit 2, 3 or 130 it writes no results.json (nor a results.json.tmp). Each command it runs
-has a process group of its own, which a Ctrl-C of the grader alone ends too; SIGHUP (a closed
-terminal) and SIGTERM are passed on to that group, and then end the grader as they did before.
+With exit 2 or 3 it writes no results.json (nor a results.json.tmp); with 130 neither, unless
+the Ctrl-C came once results.json was written whole: its line says which ("grade: interrupted
+after writing PATH" or "grade: interrupted; nothing written to PATH"). Each command it runs has a
+process group of its own, which a Ctrl-C of the grader alone ends too; SIGHUP (a closed terminal)
+and SIGTERM are passed on to that group, and then end the grader as they did before.
 """
 from __future__ import annotations
 
@@ -47,7 +49,8 @@ from pathlib import Path
 
 # The Python tools' shared module, beside this file (found however this file is run).
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from tooling import EXIT_INTERRUPTED, output_problem, run_command_line, write_whole  # noqa: E402
+from tooling import (EXIT_INTERRUPTED, Written, output_problem, run_command_line,  # noqa: E402
+                     write_whole)
 
 EXIT_OK, EXIT_REQUIRED_FAILED, EXIT_USAGE, EXIT_CANNOT_RUN = 0, 1, 2, 3
 
@@ -460,7 +463,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                "cannot be written (checked first); 3 the grader could not work (cmake missing, "
                "an output it could not write all the same); 130 interrupted (Ctrl-C), the "
                "command running then ended with it; 141 the reader of the output went away "
-               "(| head). No results.json with 2, 3 or 130.")
+               "(| head). No results.json with 2 or 3, nor with 130 unless the line says it "
+               "was written.")
     parser.add_argument("-S", "--source-dir", type=Path, default=REPO, metavar="DIR",
                         help="the checkout to grade (default: the one holding this grader)")
     parser.add_argument("-B", "--build-dir", type=Path, metavar="DIR",
@@ -525,6 +529,7 @@ def checked_arguments(argv: list[str]) -> tuple[argparse.Namespace, list[Weight]
 
 def main(argv: list[str]) -> int:
     args = None
+    written = Written()
     try:
         args, weights, stages, absent = checked_arguments(argv)
         if args.list:
@@ -562,7 +567,7 @@ def main(argv: list[str]) -> int:
         try:
             write_whole(args.results,
                         json.dumps(gradescope(stages, absent, report, time.monotonic() - start),
-                                   indent=2) + "\n")
+                                   indent=2) + "\n", written)
         except OSError as e:
             raise CannotRun(f"cannot write {args.results}: {e.strerror}") from None
 
@@ -585,8 +590,7 @@ def main(argv: list[str]) -> int:
         return EXIT_CANNOT_RUN
     except KeyboardInterrupt:  # the command running then is ended already (child)
         writes = args is not None and not args.list
-        where = f"; nothing written to {args.results}" if writes else ""
-        print(f"grade: interrupted{where}", file=sys.stderr)
+        print(written.interrupted("grade", args.results if writes else None), file=sys.stderr)
         return EXIT_INTERRUPTED
 
 

@@ -29,9 +29,13 @@ and lines that keep the compiler quiet about what the stubs leave unused (parame
 Exit codes: 0 written; 1 the handout could not be written (git failed, a file could not be
 copied); 2 bad usage: an unknown stage, a stage without solution regions, a malformed marker, an
 output directory that is not empty or lies inside the repository, a source that is no checkout;
-130 interrupted (Ctrl-C): nothing is written, the output directory is as it was; 141 the reader of
-its output went away (a pipe closed early, `make-handout --list | head -1`): it stops there,
-quietly, as a program that SIGPIPE ends (a handout written before that stays whole).
+130 interrupted (Ctrl-C): one line says whether the handout was written: once it is whole it
+stays ("interrupted after writing DIR"), before that nothing is written ("interrupted; nothing
+written to DIR"); 141 the reader of its output went away (a pipe closed early, `make-handout
+--list | head -1`): it stops there, quietly, as a program that SIGPIPE ends (a handout written
+before that stays whole). With 1, or 130 before the handout is whole, nothing is left behind: the
+output directory is as it was, and the folders made for it are removed again (each only while it
+is empty; a folder that was there before stays).
 """
 from __future__ import annotations
 
@@ -48,7 +52,8 @@ from pathlib import Path
 
 # The Python tools' shared module, beside this file (found however this file is run).
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from tooling import EXIT_INTERRUPTED, run_command_line  # noqa: E402
+from tooling import (EXIT_INTERRUPTED, Written, missing_folders, put_in_place,  # noqa: E402
+                     remove_made_folders, run_command_line)
 
 EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 
@@ -397,7 +402,10 @@ def read_text(path: Path) -> str:
         raise UsageError(f"{path}: not UTF-8 text") from None
 
 
-def write_handout(source: Path, stage_name: str, out: Path) -> str:
+def write_handout(source: Path, stage_name: str, out: Path, written: Written) -> str:
+    """Writes the handout of stage_name into out, adding out to written once it is whole; returns
+    the report to print. @raises UsageError, Failed; KeyboardInterrupt (a Ctrl-C), after which
+    out is in written or nothing is left behind."""
     top = Path(os.path.realpath(git(source, "rev-parse", "--show-toplevel").strip()))
     files = tracked_files(source)
     stages = stages_of(files)
@@ -450,12 +458,14 @@ def write_handout(source: Path, stage_name: str, out: Path) -> str:
     if later:
         lines.append(f"  left out: {', '.join(s.folder for s in later)}")
 
-    # Copied into a hidden directory beside DIR, renamed to DIR when whole: an error or a Ctrl-C
-    # on the way removes it, and DIR is as it was.
-    out.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
-    emptied = False
+    # Copied into a hidden directory beside DIR, renamed to DIR when whole (replacing DIR when it
+    # is an empty directory): an error or a Ctrl-C on the way removes it and the folders made for
+    # DIR, and DIR is as it was.
+    made = missing_folders(out.parent)  # before any is made: never one that was there before
+    tmp: Path | None = None
     try:
+        out.parent.mkdir(parents=True, exist_ok=True)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
         for f in files:
             if f.split("/", 1)[0] in left_out:
                 continue
@@ -470,14 +480,13 @@ def write_handout(source: Path, stage_name: str, out: Path) -> str:
                 shutil.copy2(src, dst)
         # mkdtemp makes the directory 0700; DIR gets the mode mkdir would have given it.
         os.chmod(tmp, 0o777 & ~current_umask())
-        if out.is_dir():
-            out.rmdir()  # empty, checked above
-            emptied = True
-        os.rename(tmp, out)
-    except BaseException as e:  # an OSError, or KeyboardInterrupt: nothing is left behind
-        shutil.rmtree(tmp, ignore_errors=True)
-        if emptied and not out.exists():
-            out.mkdir()  # the empty directory the caller gave back as it was
+        put_in_place(tmp, out, written)  # DIR, when there, is empty: checked above
+    except BaseException as e:  # an OSError, or KeyboardInterrupt
+        if out in written:
+            raise  # a Ctrl-C once the handout is whole: it stays
+        if tmp is not None:
+            shutil.rmtree(tmp, ignore_errors=True)
+        remove_made_folders(made)
         if isinstance(e, OSError):
             raise Failed(f"cannot write the handout into {out}: {e}") from None
         raise
@@ -525,6 +534,7 @@ def main(argv: list[str]) -> int:
         args = parser.parse_args(argv)
     except SystemExit as e:
         return EXIT_OK if e.code == 0 else EXIT_USAGE
+    written = Written()
     try:
         source = args.source_dir.resolve()
         if args.list:
@@ -532,7 +542,7 @@ def main(argv: list[str]) -> int:
             return EXIT_OK
         if not args.stage or args.out is None:
             raise UsageError("--stage and --out are required (or --list)")
-        print(write_handout(source, args.stage, args.out))
+        print(write_handout(source, args.stage, args.out, written))
         return EXIT_OK
     except UsageError as e:
         print(f"make-handout: error: {e}", file=sys.stderr)
@@ -541,8 +551,8 @@ def main(argv: list[str]) -> int:
         print(f"make-handout: error: {e}", file=sys.stderr)
         return EXIT_FAILED
     except KeyboardInterrupt:
-        where = f"; nothing written to {args.out}" if args.out is not None and not args.list else ""
-        print(f"make-handout: interrupted{where}", file=sys.stderr)
+        writes = args.out is not None and not args.list
+        print(written.interrupted("make-handout", args.out if writes else None), file=sys.stderr)
         return EXIT_INTERRUPTED
 
 

@@ -18,10 +18,11 @@ Whatever is missing (a README, a linked image, the galaxy pair, the timing) is l
 page, said so on it, and listed on stderr as "make-gallery: missing: ...". The exit code is 0
 then too; 2 for bad usage (a --bench FILE that is not there, an output the page cannot be written
 to, checked before any work) or a timing file that does not follow the schema below; 1 when
-writing the page fails all the same; 130 when interrupted (Ctrl-C): one line on stderr says so,
-the page is not written (an earlier one is left as it was); 141 when the reader of its output
-went away (a pipe closed early, `scripts/make-gallery.py | head -1`): it stops there, quietly,
-as a program that SIGPIPE ends. The page is written whole or not at all.
+writing the page fails all the same; 130 when interrupted (Ctrl-C): one line on stderr says so
+and whether the page was written ("interrupted after writing PAGE" once it is whole, else
+"interrupted; nothing written to PAGE", an earlier page left as it was); 141 when the reader of
+its output went away (a pipe closed early, `scripts/make-gallery.py | head -1`): it stops there,
+quietly, as a program that SIGPIPE ends. The page is written whole or not at all.
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,
@@ -55,7 +56,8 @@ from pathlib import Path
 
 # The Python tools' shared module, grading/tooling.py.
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "grading"))
-from tooling import EXIT_INTERRUPTED, output_problem, run_command_line, write_whole  # noqa: E402
+from tooling import (EXIT_INTERRUPTED, Written, output_problem, run_command_line,  # noqa: E402
+                     write_whole)
 
 PROGRAM = "make-gallery"
 STYLESHEET = Path(__file__).resolve().parent.parent / "docs" / "gallery.css"
@@ -474,6 +476,7 @@ def main(argv: list[str]) -> int:
     if problem := output_problem(output):
         print(f"{PROGRAM}: {cannot_write}: {problem}", file=sys.stderr)
         return 2
+    written = Written()
     try:
         try:
             text = page(root, bench, output.parent)
@@ -481,14 +484,14 @@ def main(argv: list[str]) -> int:
             print(f"{PROGRAM}: {e}", file=sys.stderr)
             return 2
         try:
-            write_whole(output, text)
+            write_whole(output, text, written)
         except OSError as e:
             print(f"{PROGRAM}: {cannot_write}: {e.strerror or e}", file=sys.stderr)
             return 1
-    except KeyboardInterrupt:  # while the page is made or written: write_whole leaves no .tmp
-        print(f"{PROGRAM}: interrupted; nothing written to {output}", file=sys.stderr)
+        print(f"{PROGRAM}: wrote {output}")
+    except KeyboardInterrupt:  # write_whole leaves no .tmp, and the page whole or not at all
+        print(written.interrupted(PROGRAM, output), file=sys.stderr)
         return EXIT_INTERRUPTED
-    print(f"{PROGRAM}: wrote {output}")
     return 0
 
 

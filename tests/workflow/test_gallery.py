@@ -34,6 +34,8 @@ import zlib
 from html.parser import HTMLParser
 from pathlib import Path
 
+from interrupts import INTERRUPTED_AFTER_WRITING
+
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent.parent
 SCRIPT = REPO / "scripts" / "make-gallery.py"
@@ -364,6 +366,18 @@ class GalleryTest(unittest.TestCase):
         self.assertEqual(r.stderr, self.MISSING +
                          f"make-gallery: interrupted; nothing written to {output}\n")
         self.assertEqual(list(output.parent.iterdir()), [])
+
+    def test_a_ctrl_c_once_the_page_is_written_says_so_and_keeps_it(self) -> None:
+        # interrupted just after the page is renamed into place: exit 130, one line after what
+        # is missing naming the page written, the page whole, no temporary file
+        output = self.tmp / "interrupted-late" / "index.html"
+        r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output,
+                         via=("-c", INTERRUPTED_AFTER_WRITING))
+        self.assertEqual((r.returncode, r.stdout), (130, ""))
+        self.assertEqual(r.stderr, self.MISSING +
+                         f"make-gallery: interrupted after writing {output}\n")
+        self.assertEqual([p.name for p in output.parent.iterdir()], ["index.html"])
+        self.assertEqual(output.read_text(encoding="utf-8"), self.text)
 
     def test_an_output_pipe_closed_early_leaves_the_page_whole(self) -> None:
         # EP01: as `scripts/make-gallery.py | head -1` when head has gone before the line saying

@@ -12,11 +12,14 @@ import os
 import shutil
 import signal
 import subprocess
+import sys
 import tempfile
 import time
 import unittest
 import xml.etree.ElementTree as ET
 from pathlib import Path
+
+from interrupts import INTERRUPTED_AFTER_WRITING
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent.parent
@@ -277,6 +280,30 @@ class GradeTest(unittest.TestCase):
                                      "directory\n")
         self.assertFalse((out / "results.json").exists())
         self.assertTrue((out / "results.json.tmp").is_dir())
+
+    def test_a_ctrl_c_once_results_json_is_written_says_so_and_keeps_it(self):
+        # The Ctrl-C comes after the rename that puts results.json in place: exit 130, the line
+        # names what is written, results.json whole, no results.json.tmp.
+        out = self.tmp / "out-interrupted-late"
+        run = subprocess.run([sys.executable, "-c", INTERRUPTED_AFTER_WRITING,
+                              str(REPO / "grading" / "grade.py"), "--jobs", "1",
+                              "-S", FIXTURE, "-B", self.build, "--no-build",
+                              "--weights", self.weights, "--stage", "stage01", "-o", out],
+                             capture_output=True, text=True, check=False)
+        self.assert_exit(run, 130)
+        self.assertEqual(run.stderr, f"grade: interrupted after writing {out / 'results.json'}\n")
+        log = out / "logs" / "ctest-stage01.log"
+        self.assertEqual(run.stdout, f"grade: stage01: running 5 tests (log: {log})\n"
+                                     "\n"
+                                     "stage    tests      points  required  result\n"
+                                     "stage01    3/3  10.00 / 10  yes       pass (1 skipped, "
+                                     "1 disabled)\n"
+                                     "total      3/3  10.00 / 10            required stages "
+                                     "pass\n"
+                                     "not in this checkout, not graded: mini2\n")
+        self.assertEqual(self.results(out / "results.json")["score"], 10.0)
+        self.assertEqual(sorted(p.name for p in out.iterdir()),
+                         ["junit-stage01.xml", "logs", "results.json"])
 
     # ---- The repository's own weights ----
 

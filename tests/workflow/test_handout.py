@@ -133,9 +133,51 @@ runpy.run_path(sys.argv[0], run_name="__main__")
 """
 
 
+# grading/handout.py as make-handout runs it, the copy of the 3rd file failing as on a full disk;
+# with $ALSO_WRITE set, a file of that path is written first (by someone else, say).
+FULL_DISK = """\
+import errno, os, runpy, shutil, sys
+copy2, copied = shutil.copy2, []
+def failing_copy2(*args, **kwargs):
+    copied.append(args[0])
+    if len(copied) == 3:
+        if "ALSO_WRITE" in os.environ:
+            with open(os.environ["ALSO_WRITE"], "w") as f:
+                f.write("not make-handout's\\n")
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+    return copy2(*args, **kwargs)
+shutil.copy2 = failing_copy2
+sys.argv = sys.argv[1:]
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
+
+# grading/handout.py as make-handout runs it, with a Ctrl-C landing just after the handout's
+# folder is renamed into place (its one rename), before make-handout says what it wrote.
+INTERRUPTED_AFTER_WRITING = """\
+import os, runpy, sys
+rename, replace = os.rename, os.replace
+def rename_then_interrupt(src, dst, **kwargs):
+    rename(src, dst, **kwargs)
+    raise KeyboardInterrupt
+def replace_then_interrupt(src, dst, **kwargs):
+    replace(src, dst, **kwargs)
+    raise KeyboardInterrupt
+os.rename, os.replace = rename_then_interrupt, replace_then_interrupt
+sys.argv = sys.argv[1:]
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
+
+
+def make_handout_with(code: str, *args: object,
+                      env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+    """grading/handout.py with args, run by the code of `python3 -c CODE`."""
+    return subprocess.run([sys.executable, "-c", code, str(REPO / "grading" / "handout.py"),
+                           *map(str, args)], capture_output=True, text=True, check=False,
+                          env=None if env is None else dict(os.environ, **env))
+
+
 def make_handout_interrupted(*args: object) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-c", INTERRUPTED, str(REPO / "grading" / "handout.py"),
-                           *map(str, args)], capture_output=True, text=True, check=False)
+    return make_handout_with(INTERRUPTED, *args)
 
 
 def git(cwd: Path, *args: str) -> None:
@@ -290,7 +332,7 @@ stage02_two (stage02): 5 region(s)
   stage02_two/src/Two.cpp:25  hint: longHint, a hint long enough to need a second line for the stub
 """)
 
-    # ---- Interrupted: exit 130, one line, nothing written ----
+    # ---- Interrupted: exit 130, one line saying what is written ----
 
     def test_a_ctrl_c_while_copying_leaves_nothing_behind(self):
         out = self.tmp / "interrupted" / "stage02"
@@ -299,7 +341,8 @@ stage02_two (stage02): 5 region(s)
         self.assert_exit(run, 130)
         self.assertEqual(run.stderr, f"make-handout: interrupted; nothing written to {out}\n")
         self.assertEqual(run.stdout, "")
-        self.assertEqual(list(out.parent.iterdir()), [])  # no hidden .stage02.XXXX either
+        # The folder made for it gone too, and with it any hidden .stage02.XXXX.
+        self.assertFalse(out.parent.exists())
 
     def test_a_ctrl_c_leaves_an_empty_output_directory_as_it_was(self):
         out = self.tmp / "interrupted-empty"
@@ -312,6 +355,68 @@ stage02_two (stage02): 5 region(s)
         self.assertEqual(list(out.iterdir()), [])
         self.assertEqual(sorted(p.name for p in self.tmp.iterdir()
                                 if p.name.startswith(".interrupted-empty.")), [])
+
+    def test_a_ctrl_c_once_the_handout_is_whole_says_so_and_keeps_it(self):
+        # The Ctrl-C comes after the rename that puts the handout in place: exit 130, the line
+        # names the handout written, which stays whole with the folders made for it.
+        base = self.tmp / "interrupted-late"
+        out = base / "new" / "stage02"
+        run = make_handout_with(INTERRUPTED_AFTER_WRITING, "--source-dir", self.source,
+                                "--stage", "stage02", "--out", out)
+        self.assert_exit(run, 130)
+        self.assertEqual(run.stderr, f"make-handout: interrupted after writing {out}\n")
+        self.assertEqual(run.stdout, "")
+        self.assertEqual(list(base.iterdir()), [base / "new"])
+        self.assertEqual(list(out.parent.iterdir()), [out])  # no hidden .stage02.XXXX
+        self.assertEqual(self.read("stage02_two/src/Two.cpp", out), TWO_CPP)
+        self.assertEqual(sorted(p.relative_to(out) for p in out.rglob("*")),
+                         sorted(p.relative_to(self.out) for p in self.out.rglob("*")))
+
+    # ---- Failed or interrupted part-way: the folders made for DIR go, the others stay ----
+
+    def test_a_failed_handout_removes_the_folders_it_made_for_its_output(self):
+        base = self.tmp / "failed-made"
+        base.mkdir()  # there before: stays, empty
+        out = base / "new1" / "new2" / "stage02"
+        run = make_handout_with(FULL_DISK, "--source-dir", self.source, "--stage", "stage02",
+                                "--out", out)
+        self.assert_exit(run, 1)
+        self.assertEqual(run.stderr, f"make-handout: error: cannot write the handout into {out}: "
+                                     "[Errno 28] No space left on device\n")
+        self.assertEqual(run.stdout, "")
+        self.assertEqual(list(base.iterdir()), [])
+
+    def test_a_failed_handout_keeps_a_folder_it_made_that_is_no_longer_empty(self):
+        # new1 gets a file of someone else's while the handout is copied: new2 goes, new1 stays
+        # with that file.
+        base = self.tmp / "failed-filled"
+        base.mkdir()
+        out = base / "new1" / "new2" / "stage02"
+        run = make_handout_with(FULL_DISK, "--source-dir", self.source, "--stage", "stage02",
+                                "--out", out, env={"ALSO_WRITE": str(base / "new1" / "other.txt")})
+        self.assert_exit(run, 1)
+        self.assertEqual(run.stderr, f"make-handout: error: cannot write the handout into {out}: "
+                                     "[Errno 28] No space left on device\n")
+        self.assertEqual(sorted(p.relative_to(base) for p in base.rglob("*")),
+                         [Path("new1"), Path("new1/other.txt")])
+        self.assertEqual((base / "new1" / "other.txt").read_text(encoding="utf-8"),
+                         "not make-handout's\n")
+
+    def test_an_interrupted_handout_removes_the_folders_it_made_and_keeps_the_others(self):
+        # base (holding a file) and base/existing (empty) were there before: both stay as they
+        # were; new1 and new2, made for the output, go.
+        base = self.tmp / "interrupted-made"
+        (base / "existing").mkdir(parents=True)
+        (base / "keep.txt").write_text("kept\n", encoding="utf-8")
+        out = base / "existing" / "new1" / "new2" / "stage02"
+        run = make_handout_interrupted("--source-dir", self.source, "--stage", "stage02",
+                                       "--out", out)
+        self.assert_exit(run, 130)
+        self.assertEqual(run.stderr, f"make-handout: interrupted; nothing written to {out}\n")
+        self.assertEqual(run.stdout, "")
+        self.assertEqual(sorted(p.relative_to(base) for p in base.rglob("*")),
+                         [Path("existing"), Path("keep.txt")])
+        self.assertEqual((base / "keep.txt").read_text(encoding="utf-8"), "kept\n")
 
     # ---- The reader of the output gone: exit 141, quietly ----
 
