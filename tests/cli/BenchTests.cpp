@@ -442,6 +442,8 @@ TEST(BenchTests, twoOutputsNamingOneFileAreRefusedBeforeAnyRay) {
   { std::ofstream(file) << "the previous table"; }
   std::filesystem::create_directory(dir + "/sub");
   std::filesystem::create_directory_symlink(std::filesystem::absolute(dir), dir + "/link");
+  const std::string hard = dir + "/hard.md";  // a second name of bench.md's file
+  std::filesystem::create_hard_link(file, hard);
   const std::string here = "bench-same-output.md";  // a new file in the current directory
   std::filesystem::remove(here);
   // A table of two-color at 8x8, or a scaling of 100 stars: fast, were they not refused.
@@ -490,6 +492,16 @@ TEST(BenchTests, twoOutputsNamingOneFileAreRefusedBeforeAnyRay) {
        scaling,
        {"-o", file, "-o", dir + "/sub/../bench.md"},
        "rt: -o: '" + file + "' and '" + dir + "/sub/../bench.md' name the same file\n"},
+      // TC07: two hard links to one existing file, whose names share nothing but the folder;
+      // for the table and for the scaling
+      {"TC07",
+       table,
+       {"-o", hard, "-o", file},
+       "rt: -o: '" + hard + "' and '" + file + "' name the same file\n"},
+      {"TC07",
+       scaling,
+       {"-o", dir + "/a.md", "-o", file, "-o", hard},
+       "rt: -o: '" + file + "' and '" + hard + "' name the same file\n"},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = c.run;
@@ -499,13 +511,14 @@ TEST(BenchTests, twoOutputsNamingOneFileAreRefusedBeforeAnyRay) {
     EXPECT_EQ(r.err, c.message) << c.partition;
     EXPECT_EQ(r.out, "") << c.partition;
   }
-  // TC07: nothing written: the file untouched, nothing beside it, no file in the current
-  // directory
+  // TC08: nothing written: the file untouched (under both its names), nothing beside it, no
+  // file in the current directory
   EXPECT_EQ(test::readFile(file), "the previous table");
+  EXPECT_EQ(test::readFile(hard), "the previous table");
   EXPECT_TRUE(std::filesystem::is_empty(dir + "/sub"));
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
                           std::filesystem::directory_iterator()),
-            3);
+            4);  // bench.md, hard.md, sub, link
   EXPECT_FALSE(std::filesystem::exists(here));
 }
 

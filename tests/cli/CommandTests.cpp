@@ -818,5 +818,44 @@ TEST(OutputTests, checkOutputWritable) {
   EXPECT_EQ(errorOf(""), "-o: cannot write '': it names no file");
 }
 
+TEST(OutputTests, sameFile) {
+  namespace fs = std::filesystem;
+  // Relative, so that "x" and "./x" are names in the current directory.
+  const std::string dir = test::freshTestDirectory("sameFile");
+  const std::string a = test::writeText(dir + "/a.png", "one image");
+  const std::string copy = test::writeText(dir + "/copy.png", "one image");
+  fs::create_directory(dir + "/sub");
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: one existing file under two spellings, and under its absolute path
+  EXPECT_TRUE(sameFile(a, "./" + dir + "/sub/../a.png"));
+  EXPECT_TRUE(sameFile(fs::absolute(a).string(), a));
+  // TC02: a hard link and a symbolic link to it, and the two links to each other
+  fs::create_hard_link(a, dir + "/hard.png");
+  fs::create_symlink("a.png", dir + "/soft.png");
+  EXPECT_TRUE(sameFile(a, dir + "/hard.png"));
+  EXPECT_TRUE(sameFile(dir + "/soft.png", a));
+  EXPECT_TRUE(sameFile(dir + "/hard.png", dir + "/soft.png"));
+  // TC03: two files with the same bytes are two files
+  EXPECT_FALSE(sameFile(a, copy));
+  // TC04: a file not made yet, named in three ways, and through a link to its folder
+  fs::create_directory_symlink(fs::absolute(dir + "/sub"), dir + "/to-sub");
+  EXPECT_TRUE(sameFile(dir + "/new.png", "./" + dir + "/new.png"));
+  EXPECT_TRUE(sameFile(dir + "/sub/../new.png", dir + "/new.png"));
+  EXPECT_TRUE(sameFile(dir + "/to-sub/new.png", dir + "/sub/new.png"));
+  // TC05: two new files, and a new file beside an existing one
+  EXPECT_FALSE(sameFile(dir + "/new.png", dir + "/other.png"));
+  EXPECT_FALSE(sameFile(dir + "/new.png", a));
+  EXPECT_FALSE(sameFile(a, dir + "/sub/a.png"));
+  // =============== Boundary Values Tests ==================
+  // TC11: a bare name in the current directory and the same with its path
+  EXPECT_TRUE(sameFile("rt-same-file-test.png", fs::absolute("rt-same-file-test.png").string()));
+  // TC12: the same name, existing and not
+  EXPECT_TRUE(sameFile(a, a));
+  EXPECT_TRUE(sameFile(dir + "/new.png", dir + "/new.png"));
+  // The checks made no file
+  EXPECT_FALSE(fs::exists(dir + "/new.png"));
+  EXPECT_TRUE(fs::is_empty(dir + "/sub"));
+}
+
 }  // namespace
 }  // namespace rt::cli

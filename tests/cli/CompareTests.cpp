@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -159,8 +161,25 @@ TEST(CompareTests, imagesThatCannotBeCompared) {
   EXPECT_EQ(r.err, "rt: --diff: '" + dir + "/./b.png' is B ('" + b +
                        "'): the difference map would overwrite an image it compares; give "
                        "another file\n");
+  // a hard link to A: another name of A's file
+  const std::string hardA = dir + "/hard-a.png";
+  std::filesystem::create_hard_link(a, hardA);
+  r = run({"compare", a, b, "--diff", hardA});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "rt: --diff: '" + hardA + "' is A ('" + a +
+                       "'): the difference map would overwrite an image it compares; give "
+                       "another file\n");
   EXPECT_EQ(test::readFile(a), bytesA);
   EXPECT_EQ(test::readFile(b), bytesB);
+  // a missing A named as --diff too: the missing file is what is wrong
+  r = run({"compare", dir + "/missing.png", b, "--diff", dir + "/./missing.png"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "rt: A: cannot read '" + dir + "/missing.png': no such file\n");
+  // nothing else written: a, tall, text, b and the link
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            5);
 }
 
 TEST(CompareTests, differenceHeatMap) {

@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -307,6 +308,71 @@ TEST_F(RtMpi, CtrlCOnMpirunBeforeAnyFrameLeavesNoFolderOfItsOwn) {
       << job.err();
   EXPECT_FALSE(fs::exists(frames));
   EXPECT_TRUE(ranksRunning(frames).empty());
+}
+
+// Ctrl-C on mpirun while rank 0 encodes the video: ffmpeg is ended, the partial video removed,
+// an earlier one left as it was, and the frames, all written, stay. The ffmpeg here is a stand-in
+// that begins the temporary video it is asked for (its last argument), then writes its process
+// id to a file and waits: the signal is sent once that file is there. mpirun, run by its full
+// path, puts its own folder (where the real ffmpeg may be) first on the ranks' PATH, so the
+// stand-in's folder is put first by env, between mpirun and rt-mpi.
+TEST_F(RtMpi, CtrlCOnMpirunWhileEncodingEndsFfmpegAndKeepsTheFrames) {
+  const fs::path bin = path("bin");
+  fs::create_directory(bin);
+  const std::string started = (bin / "started").string();
+  writeText((bin / "ffmpeg").string(),
+            "#!/bin/sh\n"
+            "for last; do :; done\n"
+            "printf 'a partial video' > \"$last\"\n"
+            "echo $$ > \"$0.pid\" && mv \"$0.pid\" '" +
+                started + "'\nexec sleep 60\n");
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const std::string frames = path("f"), video = writeText(path("v.mp4"), "an earlier video");
+  std::vector<std::string> argv =
+      mpirun(2, {"animate", "galaxy", "--orbit", "30", "--frames", "2", "--width", "16",
+                 "--threads", "1", "-o", frames, "--video", video});
+  const auto program = std::find(argv.begin(), argv.end(), std::string(RT_MPI_EXE));
+  argv.insert(program, {"/usr/bin/env", "PATH=" + bin.string() + ":/usr/bin:/bin"});
+  RtChild job(Program{argv});
+  ASSERT_TRUE(job.waitForLine("rt-mpi: dealt 2 frames")) << job.err();  // the encoding next
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(started) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(fs::exists(started)) << "the stand-in ffmpeg did not start";
+  std::string ffmpeg = readFile(started);
+  ffmpeg.erase(ffmpeg.find_last_not_of('\n') + 1);  // its process id
+  // The partial video is there before the signal: its removal is what is checked below.
+  std::vector<std::string> partial;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir_))
+    if (e.path().filename().string().starts_with(".rt-")) partial.push_back(readFile(e.path()));
+  ASSERT_EQ(partial, std::vector<std::string>{"a partial video"});
+  job.signal(SIGINT);
+  // mpirun, interrupted itself, exits with 1 (docs/distributed.md); rank 0's line says what
+  // happened.
+  EXPECT_EQ(job.wait(), 1) << job.err();
+  const std::vector<std::string> lines = rtMpiLines(job.err());
+  ASSERT_FALSE(lines.empty()) << job.err();
+  EXPECT_EQ(lines.back(), "rt-mpi: interrupted while encoding " + video +
+                              " (nothing written to it; 2 whole frames written to " + frames + ")");
+  // ffmpeg has ended: no process of its id runs (a zombie has no command line).
+  EXPECT_EQ(readFile("/proc/" + ffmpeg + "/cmdline"), "") << "ffmpeg, process " << ffmpeg;
+  EXPECT_EQ(readFile(video), "an earlier video");
+  std::vector<std::string> left, framesLeft;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir_))
+    left.push_back(e.path().filename().string());
+  for (const fs::directory_entry& e : fs::directory_iterator(frames))
+    framesLeft.push_back(e.path().filename().string());
+  std::sort(left.begin(), left.end());
+  std::sort(framesLeft.begin(), framesLeft.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"bin", "f", "v.mp4"}));  // no partial video
+  EXPECT_EQ(framesLeft, (std::vector<std::string>{"frame-0000.png", "frame-0001.png"}));
+  EXPECT_TRUE(ranksRunning(frames).empty());
+  // The frames are whole: rt animate's bytes.
+  const RtResult rt = runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2", "--width", "16",
+                             "-o", path("rt"), "-q"});
+  ASSERT_EQ(rt.exitCode, 0) << rt.err;
+  for (const std::string& frame : framesLeft)
+    EXPECT_EQ(readFile(frames + "/" + frame), readFile(path("rt/" + frame))) << frame;
 }
 
 TEST_F(RtMpi, AnimateEncodesTheVideoOnRankZero) {

@@ -60,18 +60,14 @@ struct CompareArgs {
   int tolerance = 0;
 };
 
-/// Whether x and y name one existing file, whatever their spelling ("./a.png", a link).
-bool sameFile(const std::string& x, const std::string& y) {
-  std::error_code ec;
-  return std::filesystem::equivalent(x, y, ec) && !ec;
-}
-
 int compare(const CompareArgs& args, const Io& io) {
   // The output first, as rt render does: a mistake costs no work.
   if (args.diff) {
     checkOutputWritable(*args.diff, PNG_IMAGE, "--diff");
+    // An input that is not there is not overwritten: reading it says it is missing.
+    std::error_code ec;
     for (const auto& [input, name] : {std::pair{&args.a, "A"}, std::pair{&args.b, "B"}})
-      if (sameFile(*args.diff, *input))
+      if (std::filesystem::exists(*input, ec) && sameFile(*args.diff, *input))
         throw UsageError("--diff: '" + *args.diff + "' is " + name + " ('" + *input +
                          "'): the difference map would overwrite an image it compares; give "
                          "another file");

@@ -1,8 +1,9 @@
-// Output paths: the check before any work starts. (The write itself is stage04's
-// writeFileAtomically, which the PNG writer uses too.)
+// Output paths: the check before any work starts, and whether two paths name one file. (The
+// write itself is stage04's writeFileAtomically, which the PNG writer uses too.)
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "camera/AtomicFile.h"
 #include "cli/CommandLine.h"
@@ -11,6 +12,22 @@
 namespace rt::cli {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// The file path names, when it may not exist yet: its absolute path with the symbolic links of
+/// the part that exists resolved and the rest lexically normal. (Made absolute first: a relative
+/// path none of which exists, "x" for a new file, would stay relative. One the system cannot
+/// resolve, through a directory it may not search say, is made absolute and normal only.)
+fs::path fileNamed(const std::string& path) {
+  std::error_code error;
+  const fs::path absolute = fs::absolute(path, error);
+  if (error) return fs::path(path).lexically_normal();  // no current directory
+  if (fs::path file = fs::weakly_canonical(absolute, error); !error) return file;
+  return absolute.lexically_normal();
+}
+
+}  // namespace
 
 void checkOutputWritable(const std::string& path, const OutputKind& kind, std::string_view what) {
   const std::string prefix = std::string(what) + ": cannot write '" + path + "': ";
@@ -32,6 +49,17 @@ void checkOutputWritable(const std::string& path, const OutputKind& kind, std::s
   } catch (const std::runtime_error& e) {
     throw UsageError(std::string(what) + ": " + e.what());
   }
+}
+
+bool sameFile(const std::string& x, const std::string& y) {
+  std::error_code ec;
+  // Both there: the file itself, so that two hard links to it are one.
+  if (fs::exists(x, ec) && fs::exists(y, ec)) {
+    const bool same = fs::equivalent(x, y, ec);
+    if (!ec) return same;
+  }
+  // One yet to be made (or one the system cannot look at): the names.
+  return fileNamed(x) == fileNamed(y);
 }
 
 }  // namespace rt::cli

@@ -102,6 +102,13 @@ inline constexpr OutputKind MP4_VIDEO{".mp4",
 void checkOutputWritable(const std::string& path, const OutputKind& kind,
                          std::string_view what = "-o");
 
+/// Whether the paths x and y name one file, so that writing one would overwrite the other. Two
+/// that exist are compared by the file they reach (its device and inode: a hard link, a
+/// symbolic link and any spelling match); otherwise by their absolute paths, the existing part
+/// with its symbolic links resolved and the rest made lexically normal ("x", "./x" and "d/../x"
+/// match for a file not made yet).
+bool sameFile(const std::string& x, const std::string& y);
+
 /// The JSON that `rt probe` prints for ray:
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",
 /// "name"}, ..], "color": [r, g, b]}. Hits are findGeoIntersections' (t > 0, sorted), normals

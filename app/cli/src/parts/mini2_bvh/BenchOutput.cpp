@@ -3,10 +3,8 @@
 #include "BenchOutput.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <fstream>
 #include <optional>
-#include <system_error>
 #include <thread>
 
 #include "Bench.h"
@@ -50,20 +48,6 @@ TableFormat fileFormat(const std::string& path, std::optional<TableFormat> flag)
   return TableFormat::Markdown;  // not reached: the path does not end in .md
 }
 
-/// The file path names, to tell two -o apart: its absolute path with the symbolic links of the
-/// part that exists resolved and the rest lexically normal, so that "x", "./x", "d/../x" and
-/// the same through a link to its directory are one file. (Made absolute first: a relative path
-/// none of which exists, "x" for a new file, would stay relative. One the system cannot
-/// resolve, through a directory it may not search say, is made absolute and normal only.)
-std::filesystem::path fileNamed(const std::string& path) {
-  std::error_code error;
-  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
-  if (error) return std::filesystem::path(path).lexically_normal();  // no current directory
-  if (std::filesystem::path file = std::filesystem::weakly_canonical(absolute, error); !error)
-    return file;
-  return absolute.lexically_normal();
-}
-
 }  // namespace
 
 Destinations chooseDestinations(const BenchArgs& args) {
@@ -74,18 +58,17 @@ Destinations chooseDestinations(const BenchArgs& args) {
                                                       : std::nullopt;
   Destinations d;
   d.stdoutFormat = flag.value_or(TableFormat::Markdown);
-  // One table a run: a file named twice would be written twice.
-  std::vector<std::filesystem::path> files;
+  // One table a run: a file named twice ("x" and "./x", two hard links to it) would be written
+  // twice.
   for (const std::string& path : args.outputs) {
     const TableFormat format = fileFormat(path, flag);
-    const std::filesystem::path file = fileNamed(path);
-    if (const auto same = std::find(files.begin(), files.end(), file); same != files.end()) {
-      const std::string& earlier = args.outputs[static_cast<std::size_t>(same - files.begin())];
-      throw UsageError(earlier == path
-                           ? "-o: '" + path + "' is given twice"
-                           : "-o: '" + earlier + "' and '" + path + "' name the same file");
+    for (const auto& file : d.files) {
+      const std::string& earlier = file.first;
+      if (sameFile(earlier, path))
+        throw UsageError(earlier == path
+                             ? "-o: '" + path + "' is given twice"
+                             : "-o: '" + earlier + "' and '" + path + "' name the same file");
     }
-    files.push_back(file);
     d.files.emplace_back(path, format);
   }
   return d;

@@ -23,8 +23,8 @@ struct Destinations {
 
 /// The table's destinations: stdout in --csv's or --json's format (Markdown without either), or
 /// every -o file in its own (the flag's, whose ending the name must have, else its ending's),
-/// each path checked writable and no two naming the same file ("x" and "./x"). @throws
-/// UsageError.
+/// each path checked writable and no two naming the same file ("x" and "./x", two hard links to
+/// one file: sameFile). @throws UsageError.
 Destinations chooseDestinations(const BenchArgs& args);
 
 /// Prints the table, or writes it to each -o file (whole or not at all). format turns the
