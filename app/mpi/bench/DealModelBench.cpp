@@ -4,10 +4,10 @@
 //   build/release/bin/mpi_deal_model [SCENE] [--width W] [--cores C] [--machines 1,4,16,64]
 //                                    [--frames F] [--gbit G] [--tile 32]
 //
-// 1. Every 8 x 8 tile of SCENE (default: the galaxy, as `rt render SCENE --width W` renders
-//    it; default W 1280, the README's main image) rendered alone, its cost the thread's CPU
-//    time; tiles of 16, 32 and 64 cost the sum of their 8 x 8 tiles. Finishing and writing the
-//    frame (its PNG) is timed too.
+// 1. Every 8 x 8 tile of SCENE (default: the galaxy) rendered alone, as `rt render SCENE`
+//    renders it (at the scene's own size, the galaxy's 1280 x 720 the README's main image;
+//    --width W as rt's), its cost the thread's CPU time; tiles of 16, 32 and 64 cost the sum
+//    of their 8 x 8 tiles. Finishing and writing the frame (its PNG) is timed too.
 // 2. One frame: the tiles dealt to machines of C cores (default 8; one rank per machine, C
 //    threads each) over links of G Gbit/s (default 1), replayed (app/mpi/model/DealModel.h), for
 //    tiles of 8, 16, 32 and 64: the predicted time, the speed-up over one machine and over one
@@ -47,7 +47,7 @@ constexpr std::uint64_t PIXEL_BYTES = 24;   // three doubles
 
 struct Options {
   std::string scene = "galaxy";
-  int width = 1280;
+  std::optional<int> width;  ///< the scene's own when not given, as rt render
   int cores = 8;
   std::vector<int> machines{1, 4, 16, 64};
   int frames = 360;
