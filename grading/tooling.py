@@ -9,7 +9,8 @@
                                         leaves, saying what it wrote or that it wrote nothing
   put_in_place(temporary, path, written)
                                         a whole file or folder renamed to path, and recorded
-  write_whole(path, text, written)      a file written whole or not at all, and recorded
+  write_whole(path, text, written)      a file written whole or not at all (nor the folders
+                                        made for it), and recorded
   missing_folders(folder)               the folders that making folder would make
   remove_made_folders(folders)          those of them still empty removed, after a failure
   run_command_line(main, argv)          main(argv) as the command line runs it
@@ -93,21 +94,23 @@ def put_in_place(temporary: Path, path: Path, written: Written) -> None:
 
 def write_whole(path: Path, text: str, written: Written) -> None:
     """Writes text to path through a temporary file (path.tmp) and a rename, its missing folders
-    made, and adds path to written once it is in place: never a half-written file, and no
-    temporary file left when the write fails or is interrupted (a Ctrl-C)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
+    made, and adds path to written once it is in place: never a half-written file, and when the
+    write fails or is interrupted (a Ctrl-C), no temporary file left nor the folders it made."""
+    made = missing_folders(path.parent)  # before any is made: never one that was there before
     temporary = path.with_name(path.name + ".tmp")
     try:
+        path.parent.mkdir(parents=True, exist_ok=True)
         temporary.write_text(text, encoding="utf-8")
         put_in_place(temporary, path, written)
     except BaseException:
+        if path in written:
+            raise  # in place: there is no temporary file left, and its folders hold it
         try:
-            # A directory of that name was there before: not ours. Once path is in place, there
-            # is no temporary file left.
-            if path not in written and not temporary.is_dir():
+            if not temporary.is_dir():  # a directory of that name was there before: not ours
                 temporary.unlink(missing_ok=True)
         except OSError:
             pass
+        remove_made_folders(made)
         raise
 
 

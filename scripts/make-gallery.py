@@ -22,7 +22,8 @@ writing the page fails all the same; 130 when interrupted (Ctrl-C): one line on 
 and whether the page was written ("interrupted after writing PAGE" once it is whole, else
 "interrupted; nothing written to PAGE", an earlier page left as it was); 141 when the reader of
 its output went away (a pipe closed early, `scripts/make-gallery.py | head -1`): it stops there,
-quietly, as a program that SIGPIPE ends. The page is written whole or not at all.
+quietly, as a program that SIGPIPE ends. The page is written whole or not at all (a folder made
+for it is removed again when it is not).
 
 The timing file, as `rt bench --json` writes it:
   {"scene": "...", "width": W, "height": H,

@@ -358,14 +358,20 @@ class GalleryTest(unittest.TestCase):
 
     def test_a_ctrl_c_while_writing_leaves_no_page_and_no_temporary_file(self) -> None:
         # EP01: interrupted as the page is renamed into place: exit 130, one line after what is
-        # missing, no traceback, nothing in the output's folder
-        output = self.tmp / "interrupted" / "index.html"
-        r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output,
-                         via=("-c", INTERRUPTED))
-        self.assertEqual((r.returncode, r.stdout), (130, ""))
-        self.assertEqual(r.stderr, self.MISSING +
-                         f"make-gallery: interrupted; nothing written to {output}\n")
-        self.assertEqual(list(output.parent.iterdir()), [])
+        # missing, no traceback, nothing left: the folders made for the page removed again, one
+        # that was there before kept, empty
+        kept = self.tmp / "interrupted"
+        for existing, output in ((kept, kept / "index.html"),
+                                 (self.tmp, self.tmp / "new1" / "new2" / "index.html")):
+            with self.subTest(str(output)):
+                existing.mkdir(exist_ok=True)
+                before = sorted(existing.iterdir())
+                r = make_gallery("--root", self.root, "--bench", BENCH, "-o", output,
+                                 via=("-c", INTERRUPTED))
+                self.assertEqual((r.returncode, r.stdout), (130, ""))
+                self.assertEqual(r.stderr, self.MISSING +
+                                 f"make-gallery: interrupted; nothing written to {output}\n")
+                self.assertEqual(sorted(existing.iterdir()), before)
 
     def test_a_ctrl_c_once_the_page_is_written_says_so_and_keeps_it(self) -> None:
         # interrupted just after the page is renamed into place: exit 130, one line after what
