@@ -27,8 +27,10 @@ files, build and test logs and a Gradescope results.json, prints their paths, an
 With exit 2 or 3 it writes no results.json (nor a results.json.tmp); with 130 neither, unless
 the Ctrl-C came once results.json was written whole: its line says which ("grade: interrupted
 after writing PATH" or "grade: interrupted; nothing written to PATH"). Each command it runs has a
-process group of its own, which a Ctrl-C of the grader alone ends too; SIGHUP (a closed terminal)
-and SIGTERM are passed on to that group, and then end the grader as they did before.
+process group of its own, which a Ctrl-C of the grader alone ends too; SIGHUP (a closed terminal),
+SIGTERM and SIGQUIT (Ctrl-\\) are passed on to that group, and then end the grader as they did
+before; a Ctrl-Z (SIGTSTP) stops that group with the grader, and continuing the grader (fg, bg)
+continues the group.
 """
 from __future__ import annotations
 
@@ -61,8 +63,9 @@ OUTPUT_CHARS = 4000  # of a test's output or a log's tail kept in results.json
 LOG_LINES = 60  # lines of a failed build's log kept in results.json
 STOP_SECONDS = 5  # after a Ctrl-C, what a command's process group has to end before SIGKILL
 # What reached the commands run when they shared the grader's process group: a closed terminal
-# hangs up the whole job, a kill of the job terminates it. The grader passes them on.
-FORWARDED = (signal.SIGHUP, signal.SIGTERM)
+# hangs up the whole job, a kill of the job terminates it, a Ctrl-\ quits it. The grader passes
+# them on; a Ctrl-Z (SIGTSTP) stops the command's group with the grader (child()).
+FORWARDED = (signal.SIGHUP, signal.SIGTERM, signal.SIGQUIT)
 
 
 class UsageError(Exception):
@@ -239,16 +242,32 @@ def end_group(process: subprocess.Popen) -> None:
 
 def child(command: list[str], **options) -> subprocess.CompletedProcess:
     """subprocess.run(command, **options) with the command in a process group of its own, which
-    the grader ends whole when it is interrupted (end_group) and passes FORWARDED on to."""
+    the grader ends whole when it is interrupted (end_group), passes FORWARDED on to, and stops
+    and continues with itself at a SIGTSTP."""
     with subprocess.Popen(command, stdin=subprocess.DEVNULL, start_new_session=True,
                           **options) as process:
         def forward(signum: int, _frame: object) -> None:
             signal_group(process, signum)
+            # A group stopped by a Ctrl-Z acts on it now (the signal may come while the grader
+            # is stopped: `kill %1` sends SIGTERM, then SIGCONT).
+            signal_group(process, signal.SIGCONT)
             signal.signal(signum, signal.SIG_DFL)
             os.kill(os.getpid(), signum)  # the grader ends by it, as it did before
 
+        def stop(signum: int, _frame: object) -> None:
+            # SIGSTOP: the command's group, in a session of its own, is an orphaned process group,
+            # where the kernel discards a SIGTSTP that would stop it.
+            signal_group(process, signal.SIGSTOP)
+            try:
+                signal.signal(signum, signal.SIG_DFL)
+                os.kill(os.getpid(), signum)  # the grader stops here until continued (fg, bg)
+                signal.signal(signum, stop)
+            finally:  # continued, or a Ctrl-C came meanwhile (end_group wants it running)
+                signal_group(process, signal.SIGCONT)
+
         # A signal the caller ignores (nohup) stays ignored, as the command inherited it.
-        kept = {s: signal.signal(s, forward) for s in FORWARDED
+        handlers = {**dict.fromkeys(FORWARDED, forward), signal.SIGTSTP: stop}
+        kept = {s: signal.signal(s, handler) for s, handler in handlers.items()
                 if signal.getsignal(s) == signal.SIG_DFL}
         try:
             out, err = process.communicate()

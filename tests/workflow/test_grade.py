@@ -1,14 +1,17 @@
 #!/usr/bin/env python3
 """scripts/grade grading the fixture project of tests/workflow/fixture: its table, results.json,
 JUnit files and exit codes, for a whole checkout, a course-mode cut, one stage, a label that
-selects nothing, and bad usage; and, with a stage added whose test waits, a Ctrl-C, a SIGTERM and a
-closed output pipe while that test runs. It builds nothing of the ray tracer: the fixture's tests
-are shell commands. Run by ctest as workflow.grade, or alone: python3 tests/workflow/test_grade.py
+selects nothing, and bad usage; and, with a stage added whose test waits, a Ctrl-C, a SIGTERM, a
+Ctrl-\\ (SIGQUIT), a Ctrl-Z (SIGTSTP) and a closed output pipe while that test runs. It builds
+nothing of the ray tracer: the fixture's tests are shell commands. Run by ctest as workflow.grade,
+or alone: python3 tests/workflow/test_grade.py
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import os
+import resource
 import shutil
 import signal
 import subprocess
@@ -320,15 +323,27 @@ class GradeTest(unittest.TestCase):
 
 # stage04_slow, added to a copy of the fixture: its one test writes its process id to
 # $GATE/started, then waits until $GATE/open exists or $GATE is gone (GATE: a folder each test
-# gives grade in its environment, which ctest passes on).
+# gives grade in its environment, which ctest passes on). It is one Python process that starts no
+# other: a shell's `sleep`, stopped by a Ctrl-Z before it runs, would hold the shell in vfork(),
+# in state D, not T.
 SLOW_STAGE = """\
 add_custom_target(stage04_tests)
-add_test(NAME Slow.waits COMMAND sh -c [[
-echo $$ > "$GATE/started.tmp" && mv "$GATE/started.tmp" "$GATE/started"
-while [ -d "$GATE" ] && [ ! -e "$GATE/open" ]; do sleep 0.05; done
+add_test(NAME Slow.waits COMMAND python3 -c [[
+import os, time
+gate = os.environ["GATE"]
+with open(f"{gate}/started.tmp", "w") as started:
+    started.write(str(os.getpid()))
+os.rename(f"{gate}/started.tmp", f"{gate}/started")
+while os.path.isdir(gate) and not os.path.exists(f"{gate}/open"):
+    time.sleep(0.05)
 ]])
 set_tests_properties(Slow.waits PROPERTIES LABELS stage04)
 """
+
+
+def state(pid: int) -> str:
+    """The state of the process pid in /proc: R running, S sleeping, T stopped, Z zombie..."""
+    return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
 
 
 def running(pid: int) -> bool:
@@ -339,15 +354,25 @@ def running(pid: int) -> bool:
     except ProcessLookupError:
         return False
     try:
-        return Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0] != "Z"
+        return state(pid) != "Z"
     except OSError:
         return True  # no /proc: only its disappearance counts
+
+
+def as_a_job() -> None:
+    """Run in the grader's process before it starts: a process group of its own, as a shell gives
+    a job, whose parent (the test) is in the same session. Wherever the test itself runs, the
+    group is then no orphaned one, in which the kernel would discard the grader's own SIGTSTP.
+    No core dump of the grader or its commands at a SIGQUIT."""
+    os.setpgrp()
+    resource.setrlimit(resource.RLIMIT_CORE, (0, resource.getrlimit(resource.RLIMIT_CORE)[1]))
 
 
 class StopTest(unittest.TestCase):
     """scripts/grade stopped while the test of stage04_slow runs: by a Ctrl-C (SIGINT to the
     grader alone, as `kill -INT` sends it: the test's process is no child of the grader's, but of
-    ctest's), by SIGTERM, by its output pipe closing."""
+    ctest's), by SIGTERM, by a Ctrl-\\ (SIGQUIT), by its output pipe closing; and suspended by a
+    Ctrl-Z (SIGTSTP), then continued."""
 
     @classmethod
     def setUpClass(cls) -> None:
@@ -373,16 +398,18 @@ class StopTest(unittest.TestCase):
             grade_command("-S", self.source, "-B", gate / "build", "--weights", self.weights,
                           "--stage", "stage04"),
             env=dict(os.environ, GATE=str(gate)), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-            text=True)
+            text=True, preexec_fn=as_a_job)
 
         def stop() -> None:
             if grader.poll() is None:
                 grader.kill()
             grader.communicate()
-            # The test, should it have outlived the grader (the fault these tests look for).
+            # The test and ctest, its process group, should they have outlived the grader (the
+            # fault these tests look for), stopped or not.
             started = gate / "started"
             if started.exists() and running(pid := int(started.read_text(encoding="utf-8"))):
-                os.kill(pid, signal.SIGKILL)
+                with contextlib.suppress(ProcessLookupError):
+                    os.killpg(os.getpgid(pid), signal.SIGKILL)
         self.addCleanup(stop)
         return grader, gate
 
@@ -412,6 +439,14 @@ class StopTest(unittest.TestCase):
                 self.fail(f"the test's process {pid} still runs 10 s after the grader ended")
             time.sleep(0.01)
 
+    def wait_for(self, condition, what: str) -> None:
+        """condition() becomes true within 30 s."""
+        deadline = time.monotonic() + 30
+        while not condition():
+            if time.monotonic() > deadline:
+                self.fail(f"not within 30 s: {what}")
+            time.sleep(0.01)
+
     def test_a_ctrl_c_ends_the_running_test_and_writes_no_results(self):
         grader, gate = self.start("interrupted")
         test = self.slow_test_pid(grader, gate)
@@ -433,6 +468,51 @@ class StopTest(unittest.TestCase):
         self.assertEqual((grader.returncode, stderr), (-signal.SIGTERM, ""))
         self.assert_ended(test)
         self.assertFalse((gate / "build" / "grading" / "results.json").exists())
+
+    def test_a_sigquit_is_passed_on_to_the_running_test(self):
+        # Ctrl-\ as `kill -QUIT` sends it to the grader alone: it ends the test too, and the
+        # grader by its default action, as before.
+        grader, gate = self.start("quit")
+        test = self.slow_test_pid(grader, gate)
+        grader.send_signal(signal.SIGQUIT)
+        _, stderr = grader.communicate(timeout=60)
+        self.assertEqual((grader.returncode, stderr), (-signal.SIGQUIT, ""))
+        self.assert_ended(test)
+        self.assertFalse((gate / "build" / "grading" / "results.json").exists())
+
+    def test_a_ctrl_z_stops_the_running_test_and_fg_continues_it(self):
+        # SIGTSTP to the grader alone stops it and the test; SIGCONT to the grader's group, as fg
+        # sends it, continues both; grading then ends as usual.
+        grader, gate = self.start("suspended")
+        test = self.slow_test_pid(grader, gate)
+        for _ in range(2):  # a second Ctrl-Z after fg as the first
+            grader.send_signal(signal.SIGTSTP)
+            self.wait_for(lambda: (state(grader.pid), state(test)) == ("T", "T"),
+                          "the grader and the test stopped")
+            os.killpg(grader.pid, signal.SIGCONT)
+            self.wait_for(lambda: "T" not in (state(grader.pid), state(test)),
+                          "the grader and the test continued")
+        (gate / "open").touch()
+        stdout, stderr = grader.communicate(timeout=60)
+        self.assertEqual((grader.returncode, stderr), (0, ""))
+        self.assertIn("\nstage    tests    points  required  result\n"
+                      "stage04    1/1  1.00 / 1  yes       pass\n"
+                      "total      1/1  1.00 / 1            required stages pass\n"
+                      "not in this checkout, not graded: mini2\n", stdout)
+
+    def test_a_sigterm_to_the_stopped_grader_ends_the_stopped_test(self):
+        # `kill %1` after a Ctrl-Z: SIGTERM, then SIGCONT to the grader's group. The test, stopped
+        # with the grader, ends with it rather than stay stopped.
+        grader, gate = self.start("stopped-terminated")
+        test = self.slow_test_pid(grader, gate)
+        grader.send_signal(signal.SIGTSTP)
+        self.wait_for(lambda: (state(grader.pid), state(test)) == ("T", "T"),
+                      "the grader and the test stopped")
+        os.killpg(grader.pid, signal.SIGTERM)
+        os.killpg(grader.pid, signal.SIGCONT)
+        _, stderr = grader.communicate(timeout=60)
+        self.assertEqual((grader.returncode, stderr), (-signal.SIGTERM, ""))
+        self.assert_ended(test)
 
     def test_an_output_pipe_closed_early_stops_the_grader_quietly(self):
         # As `scripts/grade | head -4`: the reader goes away while the test runs; the grader's
