@@ -4,9 +4,9 @@
 #   scripts/test-all.sh [CTEST_OPTION]...
 #
 # Works from any directory on a fresh Debian machine: installs missing packages
-# (scripts/deps.sh, python3 with matplotlib for the workflow tests, OpenMPI for rt-mpi and its
-# tests, ffmpeg for rt animate --video, Embree 3 for rt bench's row and its tests, clang-format
-# for the layout check), configures the release preset, builds all targets and runs ctest with
+# (scripts/deps.sh, python3 with matplotlib for the workflow tests, Chromium for the gallery's
+# test in a headless browser, OpenMPI for rt-mpi and its tests, ffmpeg for rt animate --video,
+# Embree 3 for rt bench's row and its tests, clang-format for the layout check), configures the release preset, builds all targets and runs ctest with
 # output on failure. Options go to ctest (for example -L stage03,
 # or -R Sphere); a selection that matches no test is an error (--no-tests=error), not a pass. The
 # last line printed is ctest's summary ("100% tests passed, 0 tests failed out of N"); the exit
@@ -24,10 +24,12 @@ esac
 build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
 
 cd "$RT_ROOT"
-# python3: scripts/grade and the workflow tests; python3-matplotlib: the gallery's charts; the
+# python3: scripts/grade and the workflow tests; python3-matplotlib: the gallery's charts;
+# chromium: the gallery in a headless browser (workflow.gallery_browser, skipped without it); the
 # optional components too (Embree, OpenMPI, ffmpeg, clang-format), so that every test runs here
 # as in CI.
-"$RT_ROOT/scripts/deps.sh" --embree --mpi --video python3 python3-matplotlib clang-format
+"$RT_ROOT/scripts/deps.sh" --embree --mpi --video python3 python3-matplotlib chromium \
+  clang-format
 
 rt_banner "Configuring (release preset) in $build_dir"
 cmake --preset release -B "$build_dir" >/dev/null
