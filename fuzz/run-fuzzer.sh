@@ -8,7 +8,8 @@
 # reader on the model files of fuzz/models/, with a corpus of its own).
 #
 # The corpus starts from the repository's scene files (scenes/*.json, tests/scenefile/data/*.json,
-# fuzz/scenes/*.json with what those lack, such as inline meshes, and fuzz/regressions/*) and
+# fuzz/scenes/*.json with what those lack, such as inline meshes, and fuzz/regressions/*, the
+# inputs of past failures: none so far, so the folder is not in the repository yet) and
 # grows in FUZZ_BUILD_DIR/corpus between runs. Exit status: 0 when
 # the time ran out without a failure; 1 when libFuzzer found a crash, a sanitizer report, a leak
 # or a timeout (the input is saved under FUZZ_BUILD_DIR/artifacts/ and printed: make it a
