@@ -8,7 +8,8 @@
 # stage up to the last one checked; each label must select tests and pass. Then, for each stage
 # folder (stage01_primitives ... mini2_bvh) that has solution regions, in course order, or only
 # the ones named (folder or label); a stage without regions is skipped and said so:
-#   1. scripts/make-handout writes its student repository;
+#   1. scripts/make-handout writes its student repository, and every relative link of its
+#      Markdown files resolves (scripts/check-links.py: a file that is left out, an anchor);
 #   2. it configures, and the test targets of its stages (<label>_tests) build;
 #   3. the stage's own tests fail, at least one of them with "not implemented" in its output;
 #   4. every stage below passes, so do the workflow tests (they need no stage), and no solution
@@ -203,6 +204,12 @@ for stage in "${wanted[@]}"; do
     continue
   fi
   sed 's/^/  /' "$log"
+  links="$work/check-links-$label.log"
+  if ! python3 scripts/check-links.py "$dir" >"$links" 2>&1; then
+    fail "$stage" "broken links in the handout's Markdown files" "$links"
+    continue
+  fi
+  sed 's/^/  /' "$links"
   if ! build_tests "$dir" "$stage"; then
     fail "$stage" "the handout does not build" "$dir/build.log"
     continue
