@@ -47,6 +47,12 @@ void GalaxyParams::validate() const {
   requireBetween(arms, 1, MAX_ARMS, "galaxy", "arms");
   requireBetween(perArm, 1, MAX_PER_ARM, "galaxy", "perArm");
   requireBetween(stars, 0, MAX_STARS, "galaxy", "stars");
+  // perArm sets the stars when stars is 0: the product is bounded as stars is.
+  if (stars == 0 && static_cast<long>(arms) * perArm > MAX_STARS)
+    throw std::invalid_argument("galaxy: arms x perArm must be at most " +
+                                std::to_string(MAX_STARS) + " stars, got " + std::to_string(arms) +
+                                " x " + std::to_string(perArm) + " = " +
+                                std::to_string(static_cast<long>(arms) * perArm));
 }
 
 int GalaxyParams::positionsPerArm() const {

@@ -150,6 +150,27 @@ TEST(GalaxyTests, parameters) {
   bad = {};
   bad.stars = GalaxyParams::MAX_STARS + 1;
   EXPECT_THROW((void)galaxy(bad), std::invalid_argument);
+  // TC13: arms x perArm beyond MAX_STARS (each within its own range), refused before anything
+  // is made; stars, when given, sets perArm instead
+  bad = {};
+  bad.arms = 1000;
+  bad.perArm = 1'000'000;
+  try {
+    (void)galaxy(bad);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(
+        "galaxy: arms x perArm must be at most 10000000 stars, got 1000 x 1000000 = 1000000000",
+        e.what());
+  }
+  GalaxyParams atMost;
+  atMost.arms = 1000;
+  atMost.perArm = 10'000;
+  EXPECT_NO_THROW(atMost.validate());
+  atMost.perArm = 10'001;
+  EXPECT_THROW(atMost.validate(), std::invalid_argument);
+  atMost.stars = 5000;
+  EXPECT_NO_THROW(atMost.validate());
 }
 
 }  // namespace

@@ -202,7 +202,8 @@ const BadInput BAD_INPUTS[] = {
      "}\n",
      "bad.json:4:51: geometries[0].vertices: Triangle: the points (0,0,0), (1,0,0), (2,0,0) do not "
      "define a plane (two coincide or all are collinear)"},
-    // EP45: a triangle so large that its normal overflows (the constructor refuses it)
+    // EP45: a triangle so large that its normal would overflow: its coordinates are refused
+    // first (beyond MAX_COORDINATE, 1e75)
     {"HugeTriangle",
      "{\n"
      "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
@@ -210,9 +211,41 @@ const BadInput BAD_INPUTS[] = {
      "  \"geometries\": [{\"type\": \"triangle\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, "
      "1e300, 0]]}]\n"
      "}\n",
-     "bad.json:4:51: geometries[0].vertices: Triangle: the normal of the points (0,0,0), "
-     "(1e+300,0,0), "
-     "(0,1e+300,0) overflows (coordinates too large)"},
+     "bad.json:4:64: geometries[0].vertices[1][0]: expected a coordinate from -1e+75 to 1e+75, "
+     "got 1e300"},
+    // EP45b: a sphere beyond MAX_COORDINATE (its solver's squares overflowed: it vanished)
+    {"FarSphere",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"sphere\", \"center\": [0, 0, -1.000001e75], "
+     "\"radius\": 1}]\n"
+     "}\n",
+     "bad.json:4:54: geometries[0].center[2]: expected a coordinate from -1e+75 to 1e+75, got "
+     "-1.000001e75"},
+    // EP45c: a radius beyond MAX_COORDINATE
+    {"HugeRadius",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"sphere\", \"center\": [0, 0, -5], \"radius\": 1e155}]\n"
+     "}\n",
+     "bad.json:4:69: geometries[0].radius: expected a length up to 1e+75, got 1e155"},
+    // EP45d: a camera beyond MAX_COORDINATE, and a cylinder's height
+    {"FarCamera",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 2e150, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]}\n"
+     "}\n",
+     "bad.json:2:30: camera.location[1]: expected a coordinate from -1e+75 to 1e+75, got 2e150"},
+    {"HugeCylinderHeight",
+     "{\n"
+     "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
+     "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
+     "  \"geometries\": [{\"type\": \"cylinder\", \"axis\": {\"origin\": [0, 0, 0], \"direction\": "
+     "[0, 1, 0]}, \"radius\": 1, \"height\": 1e151}]\n"
+     "}\n",
+     "bad.json:4:117: geometries[0].height: expected a length up to 1e+75, got 1e151"},
     // EP23: zero normal
     {"ZeroNormal",
      "{\n"
@@ -627,8 +660,8 @@ const BadInput BAD_INPUTS[] = {
      "{\n"
      "  \"camera\": {\"location\": [0, 0, 0], \"target\": [0, 0, -1], \"vpDistance\": 1,\n"
      "             \"vpSize\": [1, 1], \"resolution\": [10, 10]},\n"
-     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1e300, 0, 0], [0, 1, 0]], "
-     "\"triangles\": [[0, 1, 2]], \"scale\": 1e10}]\n"
+     "  \"geometries\": [{\"type\": \"mesh\", \"vertices\": [[0, 0, 0], [1e75, 0, 0], [0, 1, 0]], "
+     "\"triangles\": [[0, 1, 2]], \"scale\": 1e300}]\n"
      "}\n",
      "bad.json:4:18: geometries[0]: TriangleMesh: vertices[1] must be finite, got (inf,0,0)"},
     // EP56: every triangle of zero area

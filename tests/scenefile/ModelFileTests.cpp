@@ -327,6 +327,30 @@ TEST_F(ModelFileTest, APlyHeaderAnnouncingMoreThanTheFileHoldsIsRefused) {
                 "'face' (at least 2^64 bytes of binary data), but 0 bytes follow it");
 }
 
+// A face whose list count is 4·10^9 (the header's element counts are right, so the check above
+// passes it): Assimp fails to allocate its indices and reports the failure as "std::bad_alloc",
+// its exception's what(); the message says it ran out of memory, with the file's size.
+TEST_F(ModelFileTest, APlyFaceListCountBeyondMemoryIsRefusedAsOutOfMemory) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "a sanitizer's allocator may reserve the tens of GB instead of failing";
+#else
+  const double memory = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) *
+                        static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+  if (memory > 32.0 * (1u << 30))
+    GTEST_SKIP() << "more than 32 GiB of memory: the allocation might succeed and be used";
+  std::string bytes =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uint int vertex_indices\nend_header\n";
+  for (const float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) bytes += leFloat(c);
+  bytes += le32(4'000'000'000u);
+  for (std::uint32_t i : {0u, 1u, 2u}) bytes += le32(i);
+  expectRefused("hugelist.ply", bytes,
+                "out of memory while reading the file (" + std::to_string(bytes.size()) +
+                    " bytes)");
+#endif
+}
+
 // ---- OFF ----------------------------------------------------------------------------------
 
 TEST_F(ModelFileTest, OffWithCommentsAndBlankLines) {

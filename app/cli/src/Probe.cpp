@@ -114,10 +114,11 @@ void addProbeCommand(CommandLine& rt) {
       "hits: every intersection with t > 0, nearest first (the course's\n"
       "findGeoIntersections); normal: the shape's outward unit normal at the point (a\n"
       "mesh's shading normal, interpolated when it is smooth); geometry: the shape's\n"
-      "index in the scene, or for a triangle of a mesh the number of shapes plus its\n"
-      "number among the meshes' triangles, with \"mesh\": M, \"triangle\": T before the\n"
-      "name (the mesh's); color: what the tracer returns for the ray, unclamped, on the\n"
-      "0-255 scale.\n",
+      "index among the scene's shapes that are not meshes (its place in a scene file's\n"
+      "geometries when no mesh comes before it), or for a triangle of a mesh the number\n"
+      "of those shapes plus its number among the meshes' triangles, with \"mesh\": M,\n"
+      "\"triangle\": T before the name (the mesh's); color: what the tracer returns for\n"
+      "the ray, unclamped, on the 0-255 scale.\n",
       probe);
   // The values are checked by probe(): a pixel's range depends on the scene's resolution.
   CLI::Option* ray = addOptional(*command, "--ray", args->ray, "the ray's origin and direction",

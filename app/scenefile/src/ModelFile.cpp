@@ -319,7 +319,13 @@ class ImportErrors {
 const aiScene* postProcess(Assimp::Importer& importer, const aiScene* scene, unsigned flags,
                            const ImportErrors& errors, const std::string& source) {
   errors.check(scene, source);  // first: a failed import's own message may be a consequence
-  if (scene == nullptr) throw ModelError(source, importer.GetErrorString());
+  if (scene == nullptr) {
+    // Assimp catches its own allocation failures and reports them as their what(): a PLY face's
+    // list count of 4·10^9 (the header's counts are checked, the lists' are not) said only
+    // "std::bad_alloc". The callers say it with the file's size.
+    if (std::string_view(importer.GetErrorString()) == "std::bad_alloc") throw std::bad_alloc();
+    throw ModelError(source, importer.GetErrorString());
+  }
   for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh* mesh = scene->mMeshes[m];
     if (mesh == nullptr) continue;

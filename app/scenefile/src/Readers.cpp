@@ -61,6 +61,21 @@ double readNumberIn(const Node& n, double lo, double hi) {
   return v;
 }
 
+double readCoordinate(const Node& n) {
+  static const std::string what = "a coordinate from -" + formatNumber(MAX_COORDINATE) + " to " +
+                                  formatNumber(MAX_COORDINATE);
+  if (!n.json().is_number()) n.expected("a number");
+  const double v = readNumber(n);
+  if (!(std::abs(v) <= MAX_COORDINATE)) n.expected(what);
+  return v;
+}
+
+double readLength(const Node& n) {
+  const double v = readPositive(n);
+  if (!(v <= MAX_COORDINATE)) n.expected("a length up to " + formatNumber(MAX_COORDINATE));
+  return v;
+}
+
 double readConstantAttenuation(const Node& n) {
   const std::string what = "a number of at least 2^-40 (the course's zero)";
   if (!n.json().is_number()) n.expected(what);
@@ -86,7 +101,7 @@ bool readBoolean(const Node& n) {
 }
 
 Point readPoint(const Node& n) {
-  const auto xyz = readArray<double, 3>(n, "a point [x,y,z]", readNumber);
+  const auto xyz = readArray<double, 3>(n, "a point [x,y,z]", readCoordinate);
   return Point(xyz[0], xyz[1], xyz[2]);
 }
 

@@ -28,8 +28,8 @@ struct GalaxyParams {
   std::uint64_t seed = 1;  ///< the generator's jitter and star colours
 
   /// @throws std::invalid_argument for arms outside 1..MAX_ARMS, perArm outside 1..MAX_PER_ARM,
-  /// stars
-  ///         outside 0..MAX_STARS, naming the parameter.
+  /// stars outside 0..MAX_STARS, naming the parameter, and, when stars is 0, for more than
+  /// MAX_STARS positions in all (arms x perArm).
   void validate() const;
   /// The positions per arm these parameters give (perArm, or stars / arms rounded, at least 1).
   int positionsPerArm() const;

@@ -182,7 +182,7 @@ void addCourseShapeTypes(SceneFormat& format) {
 void attachGeometries(SceneFormat& format) {
   using F = GeometryFields;
   const auto center = [](const Node& n, F& f) { f.center = readPoint(n); };
-  const auto radius = [](const Node& n, F& f) { f.radius = readPositive(n); };
+  const auto radius = [](const Node& n, F& f) { f.radius = readLength(n); };
   const auto axis = [](const Node& n, F& f) {
     static const KeyTable<AxisFields> keys = sceneFormat().table<AxisFields>("axis");
     AxisFields a;
@@ -209,7 +209,7 @@ void attachGeometries(SceneFormat& format) {
   format.attach<F>("geometry cylinder", "axis", axis);
   format.attach<F>("geometry cylinder", "radius", radius);
   format.attach<F>("geometry cylinder", "height",
-                   [](const Node& n, F& f) { f.height = readPositive(n); });
+                   [](const Node& n, F& f) { f.height = readLength(n); });
   format.attach<F>("geometry", "name", [](const Node& n, F& f) { f.name = readString(n); });
 
   // A stage-4 scene keeps the shapes only (a later stage's part replaces this adder).
