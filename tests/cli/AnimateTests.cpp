@@ -2,12 +2,14 @@
 // against single renders, the video through ffmpeg where it is installed, and the refusals.
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "RtProcess.h"
@@ -359,6 +361,55 @@ TEST(RtAnimate, CtrlCWhileEncodingEndsFfmpegAndWritesNoVideo) {
   std::size_t entries = 0;
   for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 3u);  // bin, f, v.mp4
+}
+
+// The temporary video renamed over the destination fails: the message gives the rename's
+// reason (once "Success", the outcome of removing the temporary file after it). The ffmpeg on
+// PATH is a stand-in: one that writes its output (the last argument) and makes the destination
+// a folder with a file in it meanwhile, and one that exits 0 having written nothing.
+TEST(RtAnimate, AFailedRenameOfTheVideoSaysWhy) {
+  namespace fs = std::filesystem;
+  const std::string dir = freshDirectory("animate-video-rename-fails");
+  const fs::path bin = fs::absolute(fs::path(dir) / "bin");
+  fs::create_directories(bin);
+  const std::string video = dir + "/v.mp4";
+  struct Case {
+    const char* partition;
+    std::string ffmpeg;  // the stand-in's script
+    int error;           // what the rename gives
+  };
+  const std::vector<Case> cases = {
+      // TC01: the destination became a folder that is not empty
+      {"TC01",
+       "#!/bin/sh\nfor last; do :; done\necho encoded > \"$last\"\nmkdir '" + video +
+           "' && echo older > '" + video + "/kept.txt'\n",
+       EISDIR},
+      // TC02: ffmpeg said it succeeded but wrote no file
+      {"TC02", "#!/bin/sh\nexit 0\n", ENOENT},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.partition);
+    fs::remove_all(video);
+    test::writeText((bin / "ffmpeg").string(), c.ffmpeg);
+    fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+    test::RtOptions options;
+    options.path = bin.string() + ":/usr/bin:/bin";
+    const test::RtResult r =
+        runRt({"animate", "galaxy", "--orbit", "30", "--frames", "2", "--width", "16", "-o",
+               dir + "/f", "--video", video, "--silent"},
+              options);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, "rt: cannot write '" + video +
+                         "': " + std::error_code(c.error, std::system_category()).message() + "\n");
+    // No temporary video left beside the destination: bin, f (and the folder v.mp4)
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir)) ++entries;
+    EXPECT_EQ(entries, c.error == EISDIR ? 3u : 2u);
+    // The folder's older content stays
+    if (c.error == EISDIR) {
+      EXPECT_EQ(readFile(video + "/kept.txt"), "older\n");
+    }
+  }
 }
 
 // Ctrl-C during the first frame: no frame written, and the folder the run made is removed; a

@@ -19,6 +19,7 @@
 #include "cli/Commands.h"
 #include "cli/Tracers.h"
 #include "glossy/Galaxy.h"
+#include "scenefile/ModelFile.h"
 
 namespace rt::cli {
 namespace {
@@ -520,6 +521,117 @@ TEST(BenchTests, twoOutputsNamingOneFileAreRefusedBeforeAnyRay) {
                           std::filesystem::directory_iterator()),
             4);  // bench.md, hard.md, sub, link
   EXPECT_FALSE(std::filesystem::exists(here));
+}
+
+TEST(BenchTests, aLinkToAFileNotMadeYetNamesThatFile) {
+  namespace fs = std::filesystem;
+  // Relative to the current directory, as the links' targets are to their folders.
+  const std::string dir = test::freshTestDirectory("benchLinkToNewFile");
+  const std::string file = dir + "/t.md";  // not made yet
+  fs::create_directory(dir + "/sub");
+  fs::create_symlink("t.md", dir + "/t_link.json");
+  fs::create_symlink("t_link.json", dir + "/chain.csv");
+  fs::create_symlink("../t.md", dir + "/sub/up.md");
+  const std::vector<std::string> table{"bench", "two-color", "--width", "8"};
+  struct Case {
+    const char* partition;
+    std::vector<std::string> args;  // after table's
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      // TC01: a link to a file that does not exist yet, after the file and before it (once both
+      // were written, the file holding the last one's JSON, with exit 0)
+      {"TC01",
+       {"-o", file, "-o", dir + "/t_link.json"},
+       "rt: -o: '" + file + "' and '" + dir + "/t_link.json' name the same file\n"},
+      {"TC01",
+       {"-o", dir + "/t_link.json", "-o", file},
+       "rt: -o: '" + dir + "/t_link.json' and '" + file + "' name the same file\n"},
+      // TC02: a chain of two links, and a link's two names
+      {"TC02",
+       {"-o", dir + "/chain.csv", "-o", file},
+       "rt: -o: '" + dir + "/chain.csv' and '" + file + "' name the same file\n"},
+      {"TC02",
+       {"-o", dir + "/chain.csv", "-o", dir + "/t_link.json"},
+       "rt: -o: '" + dir + "/chain.csv' and '" + dir + "/t_link.json' name the same file\n"},
+      // TC03: a relative target starts from the link's folder, not the current directory
+      {"TC03",
+       {"-o", dir + "/sub/up.md", "-o", file},
+       "rt: -o: '" + dir + "/sub/up.md' and '" + file + "' name the same file\n"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = table;
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const Outcome r = run(args);
+    EXPECT_EQ(r.code, 2) << c.partition;
+    EXPECT_EQ(r.err, c.message) << c.partition;
+    EXPECT_EQ(r.out, "") << c.partition;
+  }
+  // TC04: nothing written: the links still dangle
+  EXPECT_FALSE(fs::exists(file));
+  EXPECT_FALSE(fs::exists(dir + "/t.md"));
+  // TC05: a link to another new file is another file: both written
+  fs::create_symlink("other.md", dir + "/o_link.json");
+  const Outcome r =
+      run({"bench", "two-color", "--width", "8", "-o", file, "-o", dir + "/o_link.json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(test::readFile(file).starts_with("rt bench two-color: 8x8, "));
+  EXPECT_TRUE(test::readFile(dir + "/other.md").starts_with("{"));
+}
+
+/// A scene file of one mesh read from a model file beside it, dir/mesh.json and dir/m.obj (an
+/// OBJ triangle in front of the camera, 8x8 pixels).
+std::string writeMeshScene(const std::string& dir) {
+  test::writeText(dir + "/m.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+  return test::writeText(
+      dir + "/mesh.json",
+      R"({"camera": {"location": [0, 0, 0], "to": [0, 0, -1], "up": [0, 1, 0], "vpDistance": 1,
+                     "vpSize": [2, 2], "resolution": [8, 8]},
+         "geometries": [{"type": "mesh", "file": "m.obj"}]})");
+}
+
+TEST(BenchTests, aTableNamingAFileTheSceneReadsIsRefusedBeforeAnyRay) {
+  namespace fs = std::filesystem;
+  const std::string dir = test::freshTestDirectory("benchOverInput");
+  const std::string scene =
+      test::writeText(dir + "/s.json", test::readFile(RT_SCENES_DIR "/two-color.json"));
+  const std::string original = test::readFile(scene);
+  fs::create_symlink("s.json", dir + "/to-scene.md");
+  const std::string sceneRefusal = "' is SCENE ('" + scene +
+                                   "'): the table would overwrite the scene file it reads; give "
+                                   "another file\n";
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: the scene file itself (once it was overwritten by the table, with exit 0)
+  Outcome r = run({"bench", scene, "--width", "8", "-o", scene});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "rt: -o: '" + scene + sceneRefusal);
+  EXPECT_EQ(r.out, "");
+  // TC02: another name of it (a symbolic link), and the last of several -o
+  r = run({"bench", scene, "--width", "8", "-o", dir + "/t.csv", "-o", dir + "/to-scene.md"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "rt: -o: '" + dir + "/to-scene.md" + sceneRefusal);
+  EXPECT_EQ(r.out, "");
+  // TC03: a model file of the scene, through a link
+  if (modelFilesSupported()) {
+    const std::string meshScene = writeMeshScene(dir);
+    fs::create_symlink("m.obj", dir + "/to-model.md");
+    r = run({"bench", meshScene, "--width", "8", "-o", dir + "/to-model.md"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, "rt: -o: '" + dir + "/to-model.md' is a model file of SCENE ('" + dir +
+                         "/m.obj'): the table would overwrite a file the scene reads; give another "
+                         "file\n");
+    EXPECT_EQ(test::readFile(dir + "/m.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+  }
+  // TC04: nothing written: the scene as it was, no table, no temporary file
+  EXPECT_EQ(test::readFile(scene), original);
+  EXPECT_FALSE(fs::exists(dir + "/t.csv"));
+  for (const fs::directory_entry& e : fs::directory_iterator(dir))
+    EXPECT_FALSE(e.path().filename().string().starts_with(".rt-tmp")) << e.path();
+  // =============== Boundary Values Tests ==================
+  // TC11: a file beside the scene is written
+  r = run({"bench", scene, "--width", "8", "-o", dir + "/s.md"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(test::readFile(dir + "/s.md").starts_with("rt bench " + scene + ": 8x8, "));
 }
 
 // ---------------------------------------------------------------------------------------------

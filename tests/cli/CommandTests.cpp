@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -51,9 +52,11 @@ using test::run;
 // The built-in scenes
 
 /// The message with which built-in scene `name` refuses --param `param`, or "" when it takes it.
-std::string refused(const char* name, const char* param) {
+std::string refused(const char* name, const char* param, const char* second = nullptr) {
+  std::vector<std::string> params{param};
+  if (second != nullptr) params.emplace_back(second);
   try {
-    (void)makeBuiltinScene(*findBuiltinScene(name), std::vector<std::string>{param});
+    (void)makeBuiltinScene(*findBuiltinScene(name), params);
   } catch (const UsageError& e) {
     return e.what();
   }
@@ -201,6 +204,13 @@ TEST(BuiltinScenesTests, teapotsTakeTheirParameters) {
                        "'count'",
                        0),
             0u);
+  // TC13: values each in range that the scene's own checks refuse: the message says which
+  // --param values were given (the galaxy's stars are bounded, not only arms and perArm)
+  EXPECT_EQ(refused("galaxy", "arms=1000", "perArm=1000000"),
+            "--param arms=1000 --param perArm=1000000: galaxy: arms x perArm must be at most "
+            "10000000 stars, got 1000 x 1000000 = 1000000000");
+  EXPECT_EQ(refused("teapot", "floor=-1"),
+            "--param floor=-1: teapotScene: floor must be a non-negative finite number, got -1");
 }
 
 TEST(TracersTests, tracerNamesAreTheSceneFormatsOnes) {
@@ -846,15 +856,110 @@ TEST(OutputTests, sameFile) {
   EXPECT_FALSE(sameFile(dir + "/new.png", dir + "/other.png"));
   EXPECT_FALSE(sameFile(dir + "/new.png", a));
   EXPECT_FALSE(sameFile(a, dir + "/sub/a.png"));
+  // TC06: a symbolic link to a file not made yet is that file, as writing through it makes it
+  // (once the names were compared, and a link and its target were two files until the target
+  // existed): a chain of links, a relative target from the link's folder, an absolute target
+  fs::create_directory(dir + "/links");
+  fs::create_symlink("t.md", dir + "/links/t_link.json");
+  fs::create_symlink("t_link.json", dir + "/links/chain.csv");
+  fs::create_symlink("../new.png", dir + "/links/up.png");
+  fs::create_symlink(fs::absolute(dir + "/new.png"), dir + "/links/absolute.png");
+  EXPECT_TRUE(sameFile(dir + "/links/t.md", dir + "/links/t_link.json"));
+  EXPECT_TRUE(sameFile(dir + "/links/t_link.json", dir + "/links/t.md"));
+  EXPECT_TRUE(sameFile(dir + "/links/chain.csv", dir + "/links/t.md"));
+  EXPECT_TRUE(sameFile(dir + "/links/chain.csv", dir + "/links/t_link.json"));
+  EXPECT_TRUE(sameFile(dir + "/links/up.png", dir + "/new.png"));
+  EXPECT_TRUE(sameFile(dir + "/links/absolute.png", "./" + dir + "/new.png"));
+  EXPECT_TRUE(sameFile(dir + "/links/up.png", dir + "/links/absolute.png"));
+  // TC07: a link to another new file, and a link whose target is relative to its own folder,
+  // not to the current directory
+  EXPECT_FALSE(sameFile(dir + "/links/t_link.json", dir + "/links/other.md"));
+  EXPECT_FALSE(sameFile(dir + "/links/t_link.json", "t.md"));
+  EXPECT_FALSE(sameFile(dir + "/links/up.png", dir + "/links/new.png"));
   // =============== Boundary Values Tests ==================
   // TC11: a bare name in the current directory and the same with its path
   EXPECT_TRUE(sameFile("rt-same-file-test.png", fs::absolute("rt-same-file-test.png").string()));
   // TC12: the same name, existing and not
   EXPECT_TRUE(sameFile(a, a));
   EXPECT_TRUE(sameFile(dir + "/new.png", dir + "/new.png"));
+  // TC13: a loop of links names no file it reaches, and the answer comes (no endless chase)
+  fs::create_symlink("loop2.md", dir + "/links/loop1.md");
+  fs::create_symlink("loop1.md", dir + "/links/loop2.md");
+  EXPECT_FALSE(sameFile(dir + "/links/loop1.md", dir + "/links/t.md"));
+  EXPECT_TRUE(sameFile(dir + "/links/loop1.md", dir + "/links/loop1.md"));
   // The checks made no file
   EXPECT_FALSE(fs::exists(dir + "/new.png"));
+  EXPECT_FALSE(fs::exists(dir + "/links/t.md"));
   EXPECT_TRUE(fs::is_empty(dir + "/sub"));
+}
+
+TEST(OutputTests, aCommandNeverWritesOverAFileItsSceneReads) {
+  namespace fs = std::filesystem;
+  const std::string dir = test::freshTestDirectory("outputOverInput");
+  const std::string scene =
+      test::writeText(dir + "/s.json", test::readFile(RT_SCENES_DIR "/two-color.json"));
+  const std::string original = test::readFile(scene);
+  fs::create_symlink("s.json", dir + "/to-scene.png");
+  fs::create_directory(dir + "/frames");
+  fs::create_symlink("../s.json", dir + "/frames/frame-0001.png");
+  const auto refusal = [&](const std::string& what, const std::string& output,
+                           const std::string& written) {
+    return "rt: " + what + ": '" + output + "' is SCENE ('" + scene + "'): " + written +
+           " would overwrite the scene file it reads; give another file\n";
+  };
+  // ============ Equivalence Partitions Tests ==============
+  // TC01: rt render -o through a link to the scene file (once the PNG replaced the scene)
+  Outcome r = run({"render", scene, "--width", "8", "-o", dir + "/to-scene.png", "--silent"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, refusal("-o", dir + "/to-scene.png", "the image"));
+  // TC02: rt export of a scene file over itself (once rewritten in place)
+  r = run({"export", scene, "-o", scene});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, refusal("-o", scene, "the exported scene"));
+  EXPECT_EQ(r.out, "");
+  // TC03: rt animate into a folder where a frame's name is a link to the scene file
+  r = run({"animate", scene, "--orbit", "30", "--frames", "2", "--width", "8", "-o",
+           dir + "/frames", "--silent"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, refusal("-o", dir + "/frames/frame-0001.png", "frame 1"));
+  // TC04: a model file, which Assimp recognises by its contents whatever its name: written over
+  // by rt render -o and by rt animate --video by its own name (checked before ffmpeg is looked
+  // for)
+  if (modelFilesSupported()) {
+    const std::string obj = "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n";
+    test::writeText(dir + "/model.png", obj);
+    test::writeText(dir + "/clip.mp4", obj);
+    const std::string meshes =
+        test::writeText(dir + "/meshes.json",
+                        R"({"camera": {"location": [0, 0, 0], "to": [0, 0, -1], "up": [0, 1, 0],
+                       "vpDistance": 1, "vpSize": [2, 2], "resolution": [8, 8]},
+           "geometries": [{"type": "mesh", "file": "model.png"},
+                          {"type": "mesh", "file": "clip.mp4"}]})");
+    r = run({"render", meshes, "-o", dir + "/model.png", "--silent"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, "rt: -o: '" + dir + "/model.png' is a model file of SCENE ('" + dir +
+                         "/model.png'): the image would overwrite a file the scene reads; give "
+                         "another file\n");
+    r = run({"animate", meshes, "--orbit", "30", "--frames", "2", "-o", dir + "/f", "--video",
+             dir + "/clip.mp4", "--silent"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(r.err, "rt: --video: '" + dir + "/clip.mp4' is a model file of SCENE ('" + dir +
+                         "/clip.mp4'): the video would overwrite a file the scene reads; give "
+                         "another file\n");
+    EXPECT_EQ(test::readFile(dir + "/model.png"), obj);
+    EXPECT_EQ(test::readFile(dir + "/clip.mp4"), obj);
+    EXPECT_FALSE(fs::exists(dir + "/f"));
+  }
+  // TC05: nothing written: the scene as it was, the frames' folder holding its link alone
+  EXPECT_EQ(test::readFile(scene), original);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir + "/frames"), fs::directory_iterator()), 1);
+  // =============== Boundary Values Tests ==================
+  // TC11: a file beside the scene, and the scene exported to another file
+  r = run({"render", scene, "--width", "8", "-o", dir + "/s.png", "--silent"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = run({"export", scene, "-o", dir + "/again.json"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(test::readFile(scene), original);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "RtProcess.h"
 #include "TestFiles.h"
+#include "camera/Image.h"
 #include "camera/ImageWriter.h"
 #include "cli/BuiltinScenes.h"
 #include "lighting/CourseScenes.h"
@@ -50,6 +51,35 @@ TEST(OutputProcessTests, aFullStandardOutputFailsTheCommand) {
   const test::RtResult bad =
       test::runProgram({"/bin/sh", "-c", "exec \"$0\" export no-such-scene >/dev/full", RT_EXE});
   EXPECT_EQ(bad.exitCode, 2) << bad.err;
+}
+
+TEST(OutputProcessTests, compareThatCannotPrintItsAnswerSaysNeitherSameNorDifferent) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const std::string dir = freshDirectory("compareFullOutput");
+  Image image(4, 4);
+  PngImageWriter().write(image, dir + "/a.png");
+  image.setPixel(1, 2, Color(9, 0, 0));
+  PngImageWriter().write(image, dir + "/b.png");
+  const auto compare = [&](const std::string& a, const std::string& b, bool full) {
+    return test::runProgram({"/bin/sh", "-c",
+                             full ? "exec \"$0\" \"$@\" >/dev/full" : "exec \"$0\" \"$@\"", RT_EXE,
+                             "compare", a, b});
+  };
+  const std::string lost = "rt: cannot write standard output: what was printed is incomplete\n";
+  // TC01: the same images and different ones, printed into a full device: exit 2, rt compare's
+  // code for an answer it could not give (once 1, which says that the images differ)
+  for (const std::string& b : {dir + "/a.png", dir + "/b.png"}) {
+    const test::RtResult r = compare(dir + "/a.png", b, true);
+    EXPECT_EQ(r.exitCode, 2) << b;
+    EXPECT_EQ(r.err, lost) << b;
+  }
+  // TC02: an image it cannot read, which prints nothing: its message and its code, 2
+  const test::RtResult missing = compare(dir + "/a.png", dir + "/none.png", true);
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_EQ(missing.err, "rt: B: cannot read '" + dir + "/none.png': no such file\n");
+  // TC03: printed where it can be, the answers stay 0 and 1
+  EXPECT_EQ(compare(dir + "/a.png", dir + "/a.png", false).exitCode, 0);
+  EXPECT_EQ(compare(dir + "/a.png", dir + "/b.png", false).exitCode, 1);
 }
 
 // ---------------------------------------------------------------------------------------------

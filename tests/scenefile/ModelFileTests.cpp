@@ -345,9 +345,9 @@ TEST_F(ModelFileTest, APlyFaceListCountBeyondMemoryIsRefusedAsOutOfMemory) {
   for (const float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) bytes += leFloat(c);
   bytes += le32(4'000'000'000u);
   for (std::uint32_t i : {0u, 1u, 2u}) bytes += le32(i);
-  expectRefused("hugelist.ply", bytes,
-                "out of memory while reading the file (" + std::to_string(bytes.size()) +
-                    " bytes)");
+  expectRefused(
+      "hugelist.ply", bytes,
+      "out of memory while reading the file (" + std::to_string(bytes.size()) + " bytes)");
 #endif
 }
 

@@ -285,6 +285,14 @@ AnimationPlan resolveAnimation(const AnimateArgs& args, bool writes) {
       args.video && !fs::exists(plan.directory, ec) &&
       fs::path(*args.video).parent_path().lexically_normal() == plan.directory.lexically_normal();
   if (args.video && !videoInFrames) checkOutputWritable(*args.video, MP4_VIDEO, "--video");
+  // Nothing written over a file the scene reads: the video (renamed over its path), and a frame
+  // (written through a link) in a folder that is there already (a new one holds no file).
+  if (args.video)
+    checkOutputIsNoInput(*args.video, "--video", "the video", args.scene.argument, doc);
+  if (fs::exists(plan.directory, ec))
+    for (const int k : plan.frames)
+      checkOutputIsNoInput(plan.framePath(k), "-o", "frame " + std::to_string(k),
+                           args.scene.argument, doc);
   if (args.video) {
     const std::optional<std::string> ffmpeg = findOnPath("ffmpeg");
     if (!ffmpeg)
@@ -399,7 +407,9 @@ bool encodeVideo(const AnimationPlan& plan, const std::atomic<bool>* stop) {
   }
   fs::rename(temporary, video, ec);
   if (ec) {
-    fs::remove(temporary, ec);
+    // The rename's reason: removing the temporary file (when there is one) must not replace it.
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
     throw std::runtime_error("cannot write '" + *plan.video + "': " + ec.message());
   }
   return true;

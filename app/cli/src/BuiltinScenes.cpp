@@ -39,7 +39,17 @@ SceneDocument makeBuiltinScene(const BuiltinScene& scene, std::span<const std::s
       throw UsageError("--param: '" + name + "' is given twice");
   }
   for (const SceneParam& p : scene.params) values.emplace(p.name, p.defaultValue);
-  return scene.make(values);
+  try {
+    return scene.make(values);
+  } catch (const std::invalid_argument& e) {
+    // The scene's own checks refused what the parameters asked for (arms x perArm beyond the
+    // galaxy's stars, a teapot floor too large for its triangles): the defaults make every scene,
+    // so the values given are the cause; say which.
+    if (params.empty()) throw;
+    std::string given;
+    for (const std::string& p : params) given += (given.empty() ? "--param " : " --param ") + p;
+    throw UsageError(given + ": " + e.what());
+  }
 }
 
 }  // namespace rt::cli

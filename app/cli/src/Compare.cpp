@@ -117,7 +117,8 @@ void addCompareCommand(CommandLine& rt) {
       "  rt render light-sphere-spot --width 500 -o mine.png\n"
       "  rt compare mine.png docs/images/light-sphere-spot.png\n\n"
       "Exit codes: 0 the same within the tolerance (every pixel's difference <= T), 1 not,\n"
-      "2 bad usage, an image that cannot be read, or images of different sizes.\n",
+      "2 bad usage, an image that cannot be read, images of different sizes, or an answer\n"
+      "that could not be printed (standard output could not be written).\n",
       compare);
   command->add_option("A", args->a, "an image (PNG)");
   command->add_option("B", args->b, "the image to compare it with");

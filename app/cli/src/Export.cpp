@@ -27,7 +27,10 @@ int exportScene(const ExportArgs& args, const Io& io) {
   // current directory's), so that the export finds the model where the scene file found it.
   const std::filesystem::path folder =
       output ? std::filesystem::path(*output).parent_path() : std::filesystem::path();
-  const std::string text = dumpScene(loadSceneArgument(args.name, args.params), folder);
+  const SceneDocument doc = loadSceneArgument(args.name, args.params);
+  // Written over the scene file it reads (or a model file), the export would replace it.
+  if (output) checkOutputIsNoInput(*output, "-o", "the exported scene", args.name, doc);
+  const std::string text = dumpScene(doc, folder);
   if (output)
     writeFileAtomically(*output, text);
   else

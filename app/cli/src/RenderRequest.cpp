@@ -20,7 +20,9 @@ RenderRequest resolveRenderRequest(const SceneArguments& arguments, const Reques
   request.tracer = &findTracer(doc.render.tracer);
   if (needs.writesImage) {
     request.output = needs.output ? *needs.output : defaultOutputPath(arguments.argument);
-    checkOutputWritable(request.output, PNG_IMAGE, needs.output ? "-o" : "the default output");
+    const std::string_view what = needs.output ? "-o" : "the default output";
+    checkOutputWritable(request.output, PNG_IMAGE, what);
+    checkOutputIsNoInput(request.output, what, "the image", arguments.argument, doc);
   }
   if (needs.makesImage)
     checkImageFits(doc.camera.nX, doc.camera.nY,

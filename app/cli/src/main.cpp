@@ -41,6 +41,9 @@ int main(int argc, char** argv) {
   // is that of the first write that failed, long overwritten by now: not shown.)
   if (!std::cout) {
     std::cerr << "rt: cannot write standard output: what was printed is incomplete\n";
+    // rt compare's 1 says that the images differ: its answer lost is its 2, the code of an
+    // answer it could not give (an image it cannot read), so that no script reads "different".
+    if (!args.empty() && args.front() == "compare") return rt::cli::EXIT_BAD_INPUT;
     return code == 0 ? 1 : code;
   }
   return code;

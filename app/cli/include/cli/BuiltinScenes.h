@@ -20,7 +20,8 @@ const BuiltinScene* findBuiltinScene(std::string_view name);
 /// The document of built-in scene `scene` with the --param values given as "NAME=VALUE" (each a
 /// parameter of the scene, each given once).
 /// @throws UsageError naming the bad parameter (unknown: with the nearest name; given twice;
-///         without '='), or what the scene's make refuses.
+///         without '='), or what the scene's make refuses: its own UsageError, or its
+///         std::invalid_argument after the --param values given ("--param floor=-1: ...").
 SceneDocument makeBuiltinScene(const BuiltinScene& scene, std::span<const std::string> params);
 
 }  // namespace rt::cli

@@ -104,10 +104,23 @@ void checkOutputWritable(const std::string& path, const OutputKind& kind,
 
 /// Whether the paths x and y name one file, so that writing one would overwrite the other. Two
 /// that exist are compared by the file they reach (its device and inode: a hard link, a
-/// symbolic link and any spelling match); otherwise by their absolute paths, the existing part
-/// with its symbolic links resolved and the rest made lexically normal ("x", "./x" and "d/../x"
-/// match for a file not made yet).
+/// symbolic link and any spelling match); otherwise by their absolute paths, the symbolic links
+/// at their ends followed as a write follows them (a chain too, a relative target from its
+/// link's folder: a link to a file not made yet names that file), the existing part with its
+/// symbolic links resolved and the rest made lexically normal ("x", "./x" and "d/../x" match for
+/// a file not made yet).
 bool sameFile(const std::string& x, const std::string& y);
+
+/// Refuses, before any work, an output that would overwrite a file the scene argument reads:
+/// the scene file (when scene names one) or a model file of doc's meshes (sameFile; an input
+/// that does not exist is not overwritten). what names the output's origin ("-o"), written what
+/// would be written there ("the image").
+/// @throws UsageError "WHAT: 'OUTPUT' is SCENE ('FILE'): WRITTEN would overwrite the scene file
+///         it reads; give another file", or "... is a model file of SCENE ('FILE'): WRITTEN would
+///         overwrite a file the scene reads; give another file".
+void checkOutputIsNoInput(const std::string& output, std::string_view what,
+                          std::string_view written, std::string_view scene,
+                          const SceneDocument& doc);
 
 /// The JSON that `rt probe` prints for ray:
 /// {"ray": {"origin": [..], "direction": [..]}, "hits": [{"t", "point", "normal", "geometry",

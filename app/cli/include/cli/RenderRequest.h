@@ -10,7 +10,8 @@
 ///                 --width/--height, --tracer, --seed and the stages' options (--threads,
 ///                 --accel) applied and checked
 ///       tracer  = the tracer kind doc.render.tracer names
-///       output  = -o or the default path, checked writable      (when the command writes one)
+///       output  = -o or the default path, checked writable and   (when the command writes one)
+///                 no file the scene reads
 ///       the image's size checked against the memory             (when the command makes one)
 ///       warnings = the scene file's, and the ambient tracer's on a scene without ambient light
 ///     request.build()
@@ -96,7 +97,8 @@ struct RenderRequest {
 
 /// Resolves arguments for a command that needs what needs says, in this order: the scene and
 /// the options (sceneFromArguments), the output path (checkOutputWritable, origin "-o" or "the
-/// default output"), the image's size (checkImageFits), then the warnings.
+/// default output"; checkOutputIsNoInput: not the scene file or a model file), the image's size
+/// (checkImageFits), then the warnings.
 /// @throws UsageError, SceneError naming the value and where it came from.
 RenderRequest resolveRenderRequest(const SceneArguments& arguments, const RequestNeeds& needs);
 

@@ -151,6 +151,9 @@ int benchRows(const BenchArgs& args, const Destinations& to, const Io& io) {
   if (!args.full && !sceneArgs.width && !sceneArgs.height) sceneArgs.width = DEFAULT_WIDTH;
   const RenderRequest request = resolveRenderRequest(sceneArgs, {.makesImage = true});
   const SceneDocument& doc = request.doc;
+  // No table over the scene file or a model file it reads (the only files a bench reads).
+  for (const auto& file : to.files)
+    checkOutputIsNoInput(file.first, "-o", "the table", args.scene.argument, doc);
   const int threads = benchThreads(args);
 
   // The rows: the reference's (the report's four, the wide BVH's and the grid's, or the
