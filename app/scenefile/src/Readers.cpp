@@ -64,7 +64,6 @@ double readNumberIn(const Node& n, double lo, double hi) {
 double readCoordinate(const Node& n) {
   static const std::string what =
       "a coordinate from -" + formatNumber(MAX_COORDINATE) + " to " + formatNumber(MAX_COORDINATE);
-  if (!n.json().is_number()) n.expected("a number");
   const double v = readNumber(n);
   if (!(std::abs(v) <= MAX_COORDINATE)) n.expected(what);
   return v;

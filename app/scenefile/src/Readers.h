@@ -49,7 +49,7 @@ bool readBoolean(const Node& n);
 /// |e1 x e2|^2 against |e1|^2·|e2|^2): with every coordinate within 10^75 those stay below
 /// about 10^302, finite. Beyond, a sphere at 10^155 overflowed into NaN and vanished from the
 /// image without a word, and a square polygon at 10^78 was refused as collinear; a scene scaled
-/// up to 10^75 renders as it does at its own size (CLI test FarScene).
+/// up to 10^75 renders as it does at its own size (tests/cli/FarSceneTests.cpp).
 inline constexpr double MAX_COORDINATE = 1e75;
 /// A finite number in [-MAX_COORDINATE, MAX_COORDINATE].
 double readCoordinate(const Node& n);
