@@ -140,6 +140,10 @@ def read_weights(path: Path) -> list[Weight]:
         text = path.read_text(encoding="utf-8")
     except OSError as e:
         raise UsageError(f"cannot read the weights file {path}: {e.strerror}") from None
+    except UnicodeDecodeError as e:
+        line = e.object[:e.start].count(b"\n") + 1
+        raise UsageError(f"{path}:{line}: not UTF-8 text (byte {e.start}: "
+                         f"0x{e.object[e.start]:02x})") from None
     weights: list[Weight] = []
     seen: dict[str, int] = {}
     for number, line in enumerate(text.splitlines(), 1):
@@ -156,7 +160,8 @@ def read_weights(path: Path) -> list[Weight]:
         if label in seen:
             raise UsageError(f"{where}: {label} already has a row, on line {seen[label]}")
         try:
-            value = float(points)
+            # Python's float() takes 1_0 for 10: a weights file's numbers are plain ones.
+            value = float(points) if "_" not in points else -1.0
         except ValueError:
             value = -1.0
         if not (math.isfinite(value) and value >= 0):
@@ -316,9 +321,35 @@ def read_junit(path: Path) -> list[TestCase]:
     return cases
 
 
+def configured_source(build: Path) -> Path | None:
+    """The source folder build's CMakeCache.txt was configured for, or None without one."""
+    try:
+        text = (build / "CMakeCache.txt").read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return None
+    for line in text.splitlines():
+        if line.startswith("CMAKE_HOME_DIRECTORY:"):
+            return Path(line.split("=", 1)[1])
+    return None
+
+
+def forget_other_source(build: Path, source: Path) -> None:
+    """A build tree configured for another folder (a checkout copied, or a submission that
+    kept the build/grade its student graded with) makes cmake refuse to configure: its cache and
+    CMakeFiles/ are removed, as cmake's message advises, so that it configures afresh."""
+    old = configured_source(build)
+    if old is None or old.resolve() == source.resolve():
+        return
+    say(f"{build} was configured for {old}: configuring it afresh for {source} "
+        "(its CMakeCache.txt and CMakeFiles/ removed)")
+    (build / "CMakeCache.txt").unlink(missing_ok=True)
+    shutil.rmtree(build / "CMakeFiles", ignore_errors=True)
+
+
 def grade(stages: list[Stage], args: argparse.Namespace, logs: Path) -> None:
     build = args.build_dir
     if not args.no_build:
+        forget_other_source(build, args.source_dir)
         log = logs / "configure.log"
         say(f"configuring {args.source_dir} in {build} (log: {log})")
         configure = ["cmake", "-S", str(args.source_dir), "-B", str(build),
@@ -475,15 +506,17 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
         epilog="A stage earns POINTS x passed / total (total: its tests that ran; skipped and "
                "disabled ones are left out); a stage that does not build or whose label selects "
                "no test earns 0 and fails.\n\n"
-               "Gradescope: scripts/grade --source-dir /autograder/submission --no-deps "
-               "--results /autograder/results/results.json\n\n"
+               "Gradescope: scripts/grade --source-dir /autograder/submission --build-dir "
+               "/autograder/build --no-deps --results /autograder/results/results.json, with a "
+               "--stage for each stage the assignment asks for (a submission without one is "
+               "then refused, not graded without it)\n\n"
                "Exit codes: 0 every required stage passed; 1 a required stage failed; 2 bad "
                "usage, bad weights file, a stage folder without weight or an output path that "
                "cannot be written (checked first); 3 the grader could not work (cmake missing, "
                "an output it could not write all the same); 130 interrupted (Ctrl-C), the "
                "command running then ended with it; 141 the reader of the output went away "
                "(| head). No results.json with 2 or 3, nor with 130 unless the line says it "
-               "was written.")
+               "was written (one an earlier run wrote stays).")
     parser.add_argument("-S", "--source-dir", type=Path, default=REPO, metavar="DIR",
                         help="the checkout to grade (default: the one holding this grader)")
     parser.add_argument("-B", "--build-dir", type=Path, metavar="DIR",

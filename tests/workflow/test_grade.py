@@ -202,6 +202,26 @@ class GradeTest(unittest.TestCase):
         self.assertIn(f"  {results}\n", run.stdout)
         self.assertEqual(self.results(results)["score"], 25.0)
 
+    def test_a_build_tree_configured_for_another_checkout_is_configured_afresh(self):
+        # A copied checkout keeps the build/grade its owner graded with (a Gradescope submission
+        # too): cmake refuses a cache made for another folder, and every stage scored 0.
+        first = self.tmp / "first"
+        shutil.copytree(FIXTURE, first, ignore=shutil.ignore_patterns("mini1_broken"))
+        self.assert_exit(grade("-S", first, "--weights", self.weights, "--stage", "stage01"), 0)
+        copy = self.tmp / "copy"
+        shutil.copytree(first, copy, symlinks=True)
+        run = grade("-S", copy, "--weights", self.weights, "--stage", "stage01")
+        self.assert_exit(run, 0)
+        build = copy.resolve() / "build" / "grade"
+        self.assertIn(f"grade: {build} was configured for {first.resolve()}: configuring it "
+                      f"afresh for {copy.resolve()} (its CMakeCache.txt and CMakeFiles/ "
+                      "removed)\n", run.stdout)
+        self.assertIn("stage01    3/3  10.00 / 10  yes       pass (1 skipped, 1 disabled)\n",
+                      run.stdout)
+        # The grader's own tree of the first checkout is left as it was
+        self.assertIn(str(first.resolve()), (first / "build" / "grade" / "CMakeCache.txt")
+                      .read_text(encoding="utf-8"))
+
     # ---- Bad usage: exit 2, naming the bad value, writing no results ----
 
     def assert_usage_error(self, message: str, *args: object, weights: Path | None = None):
@@ -225,6 +245,17 @@ class GradeTest(unittest.TestCase):
         weights = self.write("bad.txt", "stage01 10 yes\nstage02 ten no\n")
         self.assert_usage_error(f"{weights}:2: POINTS of stage02: expected a number >= 0, "
                                 "got 'ten'", weights=weights)
+
+    def test_a_weights_file_that_is_no_utf8_text_is_a_usage_error_naming_line_and_byte(self):
+        weights = self.tmp / "binary.txt"
+        weights.write_bytes(b"stage01 10 yes\n\xff\xfe bad\n")
+        self.assert_usage_error(f"{weights}:2: not UTF-8 text (byte 15: 0xff)", weights=weights)
+
+    def test_points_are_plain_numbers_not_python_literals(self):
+        # float() takes 1_0 for 10; the row is refused instead
+        weights = self.write("underscore.txt", "stage01 1_0 yes\n")
+        self.assert_usage_error(f"{weights}:1: POINTS of stage01: expected a number >= 0, "
+                                "got '1_0'", weights=weights)
 
     def test_a_source_dir_without_stage_folders_is_a_usage_error_naming_it(self):
         # A folder named like a stage but without a CMakeLists.txt is none.
