@@ -373,9 +373,22 @@ def git(source: Path, *args: str) -> str:
     except OSError as e:
         raise Failed(f"cannot run git: {e.strerror}") from None
     if run.returncode != 0:
-        raise UsageError(f"{source} is not a git checkout: git {' '.join(args)}: "
-                         f"{run.stderr.strip()}")
+        raise UsageError(f"{not_a_checkout(source)}: handouts are cut from the course's "
+                         f"repository, a git checkout, and a handout cannot cut handouts (git "
+                         f"{' '.join(args)}: {run.stderr.strip()})")
     return run.stdout
+
+
+def not_a_checkout(source: Path) -> str:
+    """What source is, git having failed there: a handout (its README has the section that
+    with_handout_section adds) or some other folder."""
+    try:
+        readme = (source / "README.md").read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError):
+        readme = ""
+    if found := re.search(r"^## This handout: `([^`]+)`$", readme, re.MULTILINE):
+        return f"{source} is a handout of {found[1]}, not a git checkout"
+    return f"{source} is not a git checkout"
 
 
 def tracked_files(source: Path) -> list[str]:

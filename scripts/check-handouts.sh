@@ -18,10 +18,11 @@
 #
 # Built as Debug (assertions on, no sanitizers) at -O1 without debug information, only the
 # stages' test targets (not `rt`), with ccache when it is installed (scripts/deps.sh installs it
-# with python3): the stages below a handout are the reference's files without their markers, the
-# same in every later handout, and the tests are the reference's, so each is compiled once. -O1
-# rather than -O0: it takes about a quarter more CPU to compile, but the sampled stages' tests
-# run ten times faster (mini1's DeterminismTests at its size then: 37 s at -O1, 9 minutes at -O0).
+# once make-handout's listing has named the stages): the stages below a handout are the
+# reference's files without their markers, the same in every later handout, and the tests are the
+# reference's, so each is compiled once. -O1 rather than -O0: it takes about a quarter more CPU to
+# compile, but the sampled stages' tests run ten times faster (mini1's DeterminismTests at its
+# size then: 37 s at -O1, 9 minutes at -O0).
 # RT_HANDOUT_OPT sets another level (RT_HANDOUT_OPT=-O0). Everything goes under RT_HANDOUT_DIR
 # (default: a new temporary directory, removed when every check passed; kept, and printed, when
 # one failed). RT_JOBS sets the parallelism (default: the core count), RT_CCACHE=0 builds
@@ -55,7 +56,10 @@ case "${work:-$tmp_parent}/" in
 esac
 
 cd "$RT_ROOT"
-"$RT_ROOT/scripts/deps.sh" python3 ccache
+# make-handout's listing first, with python3 alone (installed when missing): a checkout that cannot
+# cut handouts (a handout itself, which is no git checkout) says so before anything else is
+# installed. The build's packages and ccache come once the stages to check are known.
+command -v python3 >/dev/null 2>&1 || "$RT_ROOT/scripts/deps.sh" --only python3
 
 # Each stage folder (in course order) and its number of solution regions, from the lines
 # "stage03_intersections (stage03): 11 region(s)" of make-handout --list.
@@ -84,6 +88,7 @@ for s in "${present[@]}"; do
 done
 ((${#wanted[@]})) || rt_die "no stage to check: none has solution regions"
 last="${wanted[-1]}"  # the reference is checked up to the last stage handed out
+"$RT_ROOT/scripts/deps.sh" python3 ccache
 
 if [[ -z "$work" ]]; then
   work="$(mktemp -d "$tmp_parent/rt-handouts.XXXXXX")"

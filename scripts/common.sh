@@ -13,6 +13,9 @@
 #   rt_stage_named NAME FOLDER...
 #                       the FOLDER that NAME names, by its folder name or its label (a trailing
 #                       slash, as a shell's completion leaves it, is allowed); nothing when none
+#   rt_needs_rt_stage   for a script that builds rt: exit 1 (rt_die) at once when the checkout has
+#                       no stage04_camera, the stage rt comes with (a student handout of an
+#                       earlier stage), before anything is installed or built
 #   rt_abspath PATH     PATH made absolute against the current directory (it need not exist):
 #                       a path the caller gave (an argument, RT_BUILD_DIR) read before a cd
 #   rt_now              seconds since the epoch, with a fraction
@@ -55,6 +58,12 @@ rt_stage_named() {
       echo "$s"
     fi
   done
+}
+
+rt_needs_rt_stage() {
+  [[ -f "$RT_ROOT/stage04_camera/CMakeLists.txt" ]] ||
+    rt_die "this checkout has no stage04_camera (a student handout of an earlier stage?): rt," \
+      "which renders, comes with stage 4"
 }
 
 rt_abspath() {

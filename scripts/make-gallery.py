@@ -40,7 +40,9 @@ The timing file, as `rt bench --json` writes it:
 
 --root is the repository (default: this script's); the page's links, images and style sheet
 (docs/gallery.css of this script's repository) are relative to the output file, so the page works opened as a file or served over HTTP from the repository.
-python3 and matplotlib come with scripts/deps.sh python3 python3-matplotlib.
+python3 and matplotlib come with scripts/deps.sh python3 python3-matplotlib. Run by another
+python3 that lacks matplotlib (a pyenv one, first on PATH), it says so, and when Debian's
+/usr/bin/python3 has it, how to run the script with that one.
 """
 from __future__ import annotations
 
@@ -50,7 +52,9 @@ import json
 import math
 import os
 import re
+import shlex
 import struct
+import subprocess
 import sys
 from decimal import ROUND_HALF_UP, Decimal
 from pathlib import Path
@@ -69,6 +73,7 @@ IMAGE_LINK = re.compile(r"(?:\]\(|src=\")\.\./docs/images/([A-Za-z0-9_.-]+\.png)
 GALAXY = [("galaxy.png", "with diffused glass", "the reference report's final image"),
           ("galaxy-clear.png", "without diffused glass", "one ray per refraction")]
 THUMBNAIL = 240  # the width of an image on the page, in CSS pixels
+SYSTEM_PYTHON = "/usr/bin/python3"  # Debian's, the one python3-matplotlib installs for
 
 ROW_KEYS = {"name": str, "tracer": str, "accel": str, "threads": int, "seconds": (int, float),
             "primary": int, "secondary": int, "shadow": int, "raysPerSecond": (int, float),
@@ -235,14 +240,29 @@ def matplotlib_pyplot():
     try:
         import matplotlib
     except ImportError as e:
-        raise BadInput("the timing chart needs matplotlib (Debian: python3-matplotlib; "
-                       f"scripts/deps.sh python3-matplotlib installs it) for {sys.executable}"
-                       ) from e
+        problem = ("the timing chart needs matplotlib (Debian: python3-matplotlib; "
+                   f"scripts/deps.sh python3-matplotlib installs it) for {sys.executable}")
+        if other := python_with_matplotlib():
+            problem += f"; {other} has it: {shlex.join([other, *sys.argv])}"
+        raise BadInput(problem) from e
     matplotlib.use("svg")
     import matplotlib.pyplot as plt
     matplotlib.rcParams.update({"svg.fonttype": "none", "svg.hashsalt": "rt-gallery",
                                 "font.size": 11, "font.family": "DejaVu Sans"})
     return plt
+
+
+def python_with_matplotlib() -> str | None:
+    """SYSTEM_PYTHON when this script runs under another interpreter (a pyenv one, say) and that
+    one imports matplotlib; else None. Asked only once matplotlib is missing here."""
+    if sys.executable == SYSTEM_PYTHON:
+        return None
+    try:
+        run = subprocess.run([SYSTEM_PYTHON, "-c", "import matplotlib"], stdin=subprocess.DEVNULL,
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+    except OSError:  # no such program
+        return None
+    return SYSTEM_PYTHON if run.returncode == 0 else None
 
 
 def svg_of(plt, fig, label: str) -> str:

@@ -22,7 +22,8 @@
 # A README link to an image of docs/images/ that does not exist is reported. --list (anywhere
 # among the arguments) prints what would be rendered and renders nothing; it still builds rt,
 # whose `rt list` and `rt export` name the scenes. Set RT_BUILD_DIR to build somewhere other than
-# build/release (a relative path is the caller's).
+# build/release (a relative path is the caller's). A checkout without stage04_camera (a handout
+# of an earlier stage) has no rt: that is said at once (exit 1), before anything is installed.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -40,6 +41,7 @@ done
 ((${#options[@]})) || options=(--width 500)
 # A relative RT_BUILD_DIR is the caller's, not the repository's (the cd below).
 build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
+rt_needs_rt_stage
 
 cd "$RT_ROOT"
 "$RT_ROOT/scripts/deps.sh"

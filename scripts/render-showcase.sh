@@ -14,7 +14,8 @@
 # starts with '-' is refused in every spelling (an option where a file name was meant: `-o
 # --width 64`); write such a file as ./-x. --help (or -h) anywhere among the arguments prints
 # this and exits 0 before any other check. Relative paths are the caller's. Set RT_BUILD_DIR to
-# build somewhere other than build/release.
+# build somewhere other than build/release. A checkout without stage04_camera (a handout of an
+# earlier stage) has no rt: that is said at once (exit 1), before anything is installed.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -66,6 +67,7 @@ while (($#)); do
   out="$(rt_abspath "$file")"
 done
 build_dir="$(rt_abspath "${RT_BUILD_DIR:-$RT_ROOT/build/release}")"
+rt_needs_rt_stage
 
 cd "$RT_ROOT"
 "$RT_ROOT/scripts/deps.sh"

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Tests of the argument checks of scripts/check-course-mode.sh, scripts/check-handouts.sh,
 # scripts/render-showcase.sh and scripts/grade: --help prints the usage and exits 0, bad usage
-# exits 2 naming the bad value, and neither installs packages nor builds anything.
+# exits 2 naming the bad value, and neither installs packages nor builds anything. And of a
+# checkout without stage04_camera (a handout of stage01, faked: a copy of scripts/ and grading/,
+# no git): render-showcase.sh and scripts/render-docs-images.sh say that rt comes with stage 4,
+# check-handouts.sh that a handout cannot cut handouts, each exit 1 before anything is installed.
 #
 #   tests/scripts/usage-test.sh PATH/TO/scripts
 #
@@ -179,6 +182,62 @@ reaches_deps "showcase: -o ./-x goes on to deps.sh" 1 '^deps\.sh: installing mis
 # An option the script does not know is `rt render`'s to judge, once rt is built: passed on.
 reaches_deps "showcase: an unknown option goes on to rt render (deps.sh first)" 1 \
   '^deps\.sh: installing missing' --bogus-option
+
+# ---- A checkout without stage04_camera: a handout of stage01, faked -------------------------
+# A copy of scripts/ and grading/ beside stage01_primitives alone, its README with the section a
+# handout has, and no git (GIT_CEILING_DIRECTORIES: nor a checkout above the temporary folder).
+# render-showcase.sh and render-docs-images.sh, which build rt, say at once that rt comes with
+# stage 4; check-handouts.sh asks make-handout first, which says why a handout cannot cut
+# handouts; neither installs anything first.
+cut="$work/cut"
+mkdir -p "$cut/stage01_primitives"
+cp -R "$scripts" "$cut/scripts"
+cp -R "$scripts/../grading" "$cut/grading"
+: >"$cut/stage01_primitives/CMakeLists.txt"
+cat >"$cut/README.md" <<'README'
+# The course
+
+## This handout: `stage01_primitives`
+
+Text.
+README
+export GIT_CEILING_DIRECTORIES="$work"
+no_rt='this checkout has no stage04_camera \(a student handout of an earlier stage\?\): rt, which'
+no_rt+=' renders, comes with stage 4$'
+script="$cut/scripts/render-showcase.sh"
+e='^render-showcase\.sh: error:'
+usage "showcase without stage04_camera: says so before deps.sh" 1 "$e $no_rt"
+usage "showcase without stage04_camera: a scene and options, the same" 1 "$e $no_rt" \
+  galaxy -o x.png --width 64
+usage "showcase without stage04_camera: bad usage is still bad usage" 2 \
+  "$e -o needs a file name: nothing follows it$" galaxy -o
+script="$cut/scripts/render-docs-images.sh"
+e='^render-docs-images\.sh: error:'
+usage "docs images without stage04_camera: says so before deps.sh" 1 "$e $no_rt"
+usage "docs images without stage04_camera: --list, the same" 1 "$e $no_rt" --list
+usage "docs images without stage04_camera: --help still prints the usage" 0 \
+  '^  scripts/render-docs-images\.sh \[--list\] \[RT_RENDER_OPTION\]\.\.\.$' --help
+if command -v python3 >/dev/null 2>&1; then
+  script="$cut/scripts/check-handouts.sh"
+  e='^check-handouts\.sh: error:'
+  why="^make-handout: error: $cut is a handout of stage01_primitives, not a git checkout:"
+  why+=" handouts are cut from the course's repository, a git checkout, and a handout cannot cut"
+  why+=" handouts \(git ls-files -z --cached: fatal: not a git repository"
+  usage "handouts in a handout: make-handout says why, before deps.sh" 1 "$why" stage01
+  usage "handouts in a handout: the listing failed, before deps.sh" 1 \
+    "$e scripts/make-handout --list failed$" stage01
+else
+  echo "note handouts in a handout: make-handout needs python3 on PATH: not run"
+fi
+# With the folder there, the scripts go on to deps.sh (which the stubs stop).
+mkdir "$cut/stage04_camera"
+: >"$cut/stage04_camera/CMakeLists.txt"
+script="$cut/scripts/render-showcase.sh"
+reaches_deps "showcase with stage04_camera: goes on to deps.sh" 1 '^deps\.sh: installing missing'
+script="$cut/scripts/render-docs-images.sh"
+reaches_deps "docs images with stage04_camera: goes on to deps.sh" 1 \
+  '^deps\.sh: installing missing' --list
+unset GIT_CEILING_DIRECTORIES
 
 # ---- scripts/grade: grade.py's parser decides, before deps.sh --------------------------------
 script="$scripts/grade"

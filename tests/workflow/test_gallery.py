@@ -24,12 +24,14 @@ import importlib.util
 import json
 import os
 import re
+import shlex
 import shutil
 import struct
 import subprocess
 import sys
 import tempfile
 import unittest
+import unittest.mock
 import zlib
 from html.parser import HTMLParser
 from pathlib import Path
@@ -79,6 +81,25 @@ pathlib.Path.replace = interrupting_replace
 sys.argv = sys.argv[1:]
 runpy.run_path(sys.argv[0], run_name="__main__")
 """
+
+# scripts/make-gallery.py run by a Python without matplotlib (`import matplotlib` fails, as in a
+# pyenv Python): argv[1] is the script, the rest its arguments.
+WITHOUT_MATPLOTLIB = """\
+import runpy, sys
+sys.modules["matplotlib"] = None
+sys.argv = sys.argv[1:]
+runpy.run_path(sys.argv[0], run_name="__main__")
+"""
+NEEDS_MATPLOTLIB = ("the timing chart needs matplotlib (Debian: python3-matplotlib; "
+                    "scripts/deps.sh python3-matplotlib installs it) for ")
+
+
+def load_make_gallery():
+    """scripts/make-gallery.py as a module, to call its functions."""
+    spec = importlib.util.spec_from_file_location("make_gallery", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 class Page(HTMLParser):
@@ -254,9 +275,7 @@ class GalleryTest(unittest.TestCase):
 
     def test_significant_digits(self) -> None:
         # EP01..EP05: three significant digits without an exponent; rays per second with a unit
-        spec = importlib.util.spec_from_file_location("make_gallery", SCRIPT)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
+        module = load_make_gallery()
         self.assertEqual([module.significant(x) for x in
                           (1.767824688442076, 96.4561250537847, 46372.19, 0.265398445, 1, 0)],
                          ["1.77", "96.5", "46400", "0.265", "1.00", "0"])
@@ -385,6 +404,23 @@ class GalleryTest(unittest.TestCase):
         self.assertEqual([p.name for p in output.parent.iterdir()], ["index.html"])
         self.assertEqual(output.read_text(encoding="utf-8"), self.text)
 
+    def test_without_matplotlib(self) -> None:
+        # EP01: a Python that cannot import matplotlib: exit 2 naming it, no page; when it is not
+        # /usr/bin/python3 and that one has matplotlib (Debian's python3-matplotlib), the command
+        # to run with it, the arguments as given
+        output = self.tmp / "no-matplotlib" / "index.html"
+        args = ("--root", self.root, "--bench", BENCH, "-o", output)
+        r = make_gallery(*args, via=("-c", WITHOUT_MATPLOTLIB))
+        problem = NEEDS_MATPLOTLIB + sys.executable
+        if sys.executable != "/usr/bin/python3" and subprocess.run(
+                ["/usr/bin/python3", "-c", "import matplotlib"], capture_output=True,
+                check=False).returncode == 0:
+            problem += ("; /usr/bin/python3 has it: " +
+                        shlex.join(["/usr/bin/python3", str(SCRIPT), *map(str, args)]))
+        self.assertEqual((r.returncode, r.stdout), (2, ""))
+        self.assertEqual(r.stderr, self.MISSING + f"make-gallery: {problem}\n")
+        self.assertFalse(output.parent.exists())
+
     def test_an_output_pipe_closed_early_leaves_the_page_whole(self) -> None:
         # EP01: as `scripts/make-gallery.py | head -1` when head has gone before the line saying
         # what was written: that line fails quietly, exit 141, the page is written all the same
@@ -399,6 +435,52 @@ class GalleryTest(unittest.TestCase):
             os.close(write)
         self.assertEqual((r.returncode, r.stderr), (141, self.MISSING))
         self.assertEqual(output.read_text(encoding="utf-8"), self.text)
+
+
+class WithoutMatplotlibTest(unittest.TestCase):
+    """The message of make-gallery.py's matplotlib_pyplot when matplotlib cannot be imported,
+    with SYSTEM_PYTHON (/usr/bin/python3) replaced by a program that does or does not import it:
+    the same on every machine."""
+
+    @classmethod
+    def setUpClass(cls) -> None:
+        cls.tmp = Path(tempfile.mkdtemp(prefix="gallery-matplotlib-test-"))
+        cls.has, cls.lacks = cls.tmp / "has-matplotlib", cls.tmp / "lacks-matplotlib"
+        cls.has.write_text("#!/bin/sh\nexit 0\n", encoding="utf-8")
+        cls.lacks.write_text("#!/bin/sh\nexit 1\n", encoding="utf-8")
+        for program in (cls.has, cls.lacks):
+            program.chmod(0o755)
+
+    @classmethod
+    def tearDownClass(cls) -> None:
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def problem(self, system_python: Path | str) -> str:
+        """The message matplotlib_pyplot raises, run as `make-gallery.py -o 'a page.html'`."""
+        module = load_make_gallery()
+        with unittest.mock.patch.dict(sys.modules, {"matplotlib": None}), \
+                unittest.mock.patch.object(module, "SYSTEM_PYTHON", str(system_python)), \
+                unittest.mock.patch.object(sys, "argv", ["scripts/make-gallery.py", "-o",
+                                                         "a page.html"]):
+            with self.assertRaises(module.BadInput) as raised:
+                module.matplotlib_pyplot()
+        return str(raised.exception)
+
+    def test_the_system_python_has_it(self) -> None:
+        # EP01: the command to run, the arguments quoted as a shell needs them
+        self.assertEqual(self.problem(self.has),
+                         f"{NEEDS_MATPLOTLIB}{sys.executable}; {self.has} has it: {self.has} "
+                         "scripts/make-gallery.py -o 'a page.html'")
+
+    def test_the_system_python_lacks_it_or_is_missing(self) -> None:
+        # BV01: no other interpreter to name
+        for program in (self.lacks, self.tmp / "no-such-python"):
+            with self.subTest(program.name):
+                self.assertEqual(self.problem(program), NEEDS_MATPLOTLIB + sys.executable)
+
+    def test_the_system_python_is_the_one_running(self) -> None:
+        # BV02: the interpreter that lacks matplotlib is the system's: not asked again
+        self.assertEqual(self.problem(sys.executable), NEEDS_MATPLOTLIB + sys.executable)
 
 
 # ---- The browser -------------------------------------------------------------------------------

@@ -184,6 +184,14 @@ def git(cwd: Path, *args: str) -> None:
     subprocess.run(["git", *args], cwd=cwd, check=True, capture_output=True)
 
 
+def git_error(folder: Path, *args: str) -> str:
+    """What `git ARGS` says, failing, in a folder that is no checkout (git's own wording)."""
+    run = subprocess.run(["git", "-C", str(folder.resolve()), *args], capture_output=True,
+                         text=True, check=False)
+    assert run.returncode != 0, f"{folder} is inside a git checkout"
+    return run.stderr.strip()
+
+
 @unittest.skipUnless(shutil.which("git"), "make-handout copies the tracked files: it needs git")
 class MakeHandoutTest(unittest.TestCase):
     @classmethod
@@ -488,9 +496,27 @@ stage02_two (stage02): 5 region(s)
     def test_refuses_a_source_that_is_not_a_git_checkout(self):
         plain = self.tmp / "plain"
         shutil.copytree(FIXTURE, plain)
-        self.assert_refused(make_handout("--source-dir", plain, "--stage", "stage02",
-                                         "--out", self.tmp / "plain-out"),
-                            "is not a git checkout")
+        run = make_handout("--source-dir", plain, "--stage", "stage02", "--out",
+                           self.tmp / "plain-out")
+        self.assert_exit(run, 2)
+        why = git_error(plain, "rev-parse", "--show-toplevel")
+        self.assertEqual(run.stderr, f"make-handout: error: {plain.resolve()} is not a git "
+                                     "checkout: handouts are cut from the course's repository, a "
+                                     "git checkout, and a handout cannot cut handouts (git "
+                                     f"rev-parse --show-toplevel: {why})\n")
+        self.assertFalse((self.tmp / "plain-out").exists())
+
+    def test_a_handout_cannot_cut_handouts_and_says_why(self):
+        # As scripts/make-handout --list run inside a handout: its own checkout is the handout,
+        # which holds no .git.
+        self.assert_exit(self.run2, 0)
+        run = make_handout("--source-dir", self.out, "--list")
+        self.assertEqual((run.returncode, run.stdout), (2, ""))
+        self.assertEqual(run.stderr, f"make-handout: error: {self.out.resolve()} is a handout of "
+                                     "stage02_two, not a git checkout: handouts are cut from the "
+                                     "course's repository, a git checkout, and a handout cannot "
+                                     "cut handouts (git ls-files -z --cached: "
+                                     f"{git_error(self.out, 'ls-files', '-z', '--cached')})\n")
 
     def test_refuses_malformed_markers_naming_file_and_line(self):
         cases = {
