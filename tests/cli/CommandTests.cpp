@@ -340,6 +340,11 @@ TEST(CommandTests, badUsageExitsWithTwoAndOneLine) {
       {"TC11",
        {"probe", "two-color", "--ray", "0,0", "0,0,-1"},
        "rt: --ray origin: expected 3 comma-separated numbers, got '0,0'\n"},
+      // TC11b: a ray origin beyond a scene file's coordinates (MAX_COORDINATE), where a sphere's
+      // solver overflowed and the probe answered that the ray hits nothing
+      {"TC11b",
+       {"probe", "two-color", "--ray", "0,0,-1e160", "0,0,1"},
+       "rt: --ray origin: expected coordinates from -1e+75 to 1e+75, got '0,0,-1e160'\n"},
       // TC12: export of a name that is not a built-in scene
       {"TC12",
        {"export", "nebula"},

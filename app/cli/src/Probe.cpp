@@ -1,4 +1,6 @@
 // rt probe SCENE (--ray OX,OY,OZ DX,DY,DZ | --pixel X,Y): one ray, what it hits, what it sees.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <ostream>
 #include <utility>
@@ -15,6 +17,7 @@
 #include "intersections/Geometries.h"
 #include "intersections/Primitives.h"
 #include "scenefile/MeshDocument.h"
+#include "scenefile/SceneFile.h"
 
 namespace rt::cli {
 
@@ -42,6 +45,10 @@ int probe(const ProbeArgs& args, const Io& io) {
   if (byRay) {
     const auto& [originText, directionText] = *args.ray;
     const Double3 origin = parseTriple(originText, "--ray origin");
+    // As a scene file's points: farther, the shapes' solvers overflow and the ray hits nothing.
+    if (!(std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z)}) <= MAX_COORDINATE))
+      throw UsageError("--ray origin: expected coordinates from -" + formatNumber(MAX_COORDINATE) +
+                       " to " + formatNumber(MAX_COORDINATE) + ", got '" + originText + "'");
     const Double3 direction = parseTriple(directionText, "--ray direction");
     if (direction.isZero())
       throw UsageError("--ray direction: must not be the zero vector, got '" + directionText + "'");

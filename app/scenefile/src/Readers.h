@@ -15,6 +15,7 @@
 #include "primitives/Double3.h"
 #include "primitives/Point.h"
 #include "primitives/Vector.h"
+#include "scenefile/SceneFile.h"
 
 namespace rt::scenefile {
 
@@ -44,14 +45,7 @@ int readInteger(const Node& n, int lo, int hi = INT_MAX);
 std::string readString(const Node& n);
 /// true or false.
 bool readBoolean(const Node& n);
-/// The largest coordinate, radius or height a file may give. The shapes' solvers and checks
-/// multiply differences of coordinates up to four at a time (a sphere's |o - c|^2, a polygon's
-/// |e1 x e2|^2 against |e1|^2·|e2|^2): with every coordinate within 10^75 those stay below
-/// about 10^302, finite. Beyond, a sphere at 10^155 overflowed into NaN and vanished from the
-/// image without a word, and a square polygon at 10^78 was refused as collinear; a scene scaled
-/// up to 10^75 renders as it does at its own size (tests/cli/FarSceneTests.cpp).
-inline constexpr double MAX_COORDINATE = 1e75;
-/// A finite number in [-MAX_COORDINATE, MAX_COORDINATE].
+/// A finite number in [-MAX_COORDINATE, MAX_COORDINATE] (scenefile/SceneFile.h).
 double readCoordinate(const Node& n);
 /// A finite number in (0, MAX_COORDINATE]: a radius or a height ("a positive number" below).
 double readLength(const Node& n);

@@ -26,6 +26,15 @@
 
 namespace rt {
 
+/// The largest coordinate, radius or height a scene file may give (and `rt probe --ray` an
+/// origin). The shapes' solvers and checks multiply differences of coordinates up to four at a
+/// time (a sphere's |o - c|^2, a polygon's |e1 x e2|^2 against |e1|^2·|e2|^2): with every
+/// coordinate within 10^75 those stay below about 10^302, finite. Beyond, a sphere at 10^155
+/// overflowed into NaN and vanished from the image without a word, and a square polygon at 10^78
+/// was refused as collinear; a scene scaled up to 10^75 renders as it does at its own size
+/// (tests/cli/FarSceneTests.cpp).
+inline constexpr double MAX_COORDINATE = 1e75;
+
 /// A scene file that cannot be read or does not describe a valid scene.
 struct SceneError : std::runtime_error {
   /// An error at a place in a file. line and column are 1-based; 0 when no position is known,
